@@ -1,0 +1,304 @@
+//! Hash and permutation primitives: the only source of randomness in wellspread.
+//!
+//! Every sampler draws its randomness from these functions, so a sample is a
+//! pure function of `(index, pattern)`: the same on every thread, machine and
+//! run, with no tables and no state. Each function names where it comes from,
+//! and each magic constant says why it is there.
+//!
+//! Floats are made in one place, [`stratum_to_unit_f32`] (and its special
+//! case [`u32_to_unit_f32`]), which works in 24-bit fixed point and truncates,
+//! so a coordinate is never `1.0` and never lands in the neighbouring stratum.
+
+/// Number of fraction bits in every coordinate wellspread produces.
+///
+/// Coordinates are multiples of `2^-24`: the spacing of f32 just below 1.0,
+/// so every value in `[0, 1)` on that grid is exactly representable.
+pub const UNIT_BITS: u32 = 24;
+
+/// The most strata one axis can be cut into while every stratum still holds a
+/// representable coordinate: `2^24`, since coordinates are multiples of `2^-24`.
+pub const MAX_STRATA: u32 = 1 << UNIT_BITS;
+
+/// The largest f32 below 1.0 (`0x1.fffffep-1`), the top of every range.
+pub const ONE_MINUS_EPSILON: f32 = 1.0 - f32::EPSILON / 2.0;
+
+/// A 32-bit integer hash with good avalanche: `lowbias32` from Chris Wellons'
+/// hash-prospector (2018), a search over xorshift-multiply hashes.
+///
+/// It is a bijection on `u32`, so distinct inputs never collide.
+#[inline]
+#[must_use]
+pub const fn hash_u32(mut x: u32) -> u32 {
+    // Constants and shifts are the search's best two-round result (bias ~0.17).
+    x ^= x >> 16;
+    x = x.wrapping_mul(0x7feb_352d);
+    x ^= x >> 15;
+    x = x.wrapping_mul(0x846c_a68b);
+    x ^= x >> 16;
+    x
+}
+
+/// Mixes `value` into `seed`: the hash of a pair, used to derive independent
+/// patterns from one seed.
+#[inline]
+#[must_use]
+pub const fn hash_combine(seed: u32, value: u32) -> u32 {
+    // The golden-ratio constant 0x9e3779b9 keeps (seed, 0) from hashing like
+    // a bare seed; hashing `value` first spreads small consecutive values.
+    hash_u32(seed ^ hash_u32(value).wrapping_add(0x9e37_79b9))
+}
+
+/// The pattern for one pixel, frame (or seed) and dimension pair.
+///
+/// Renderers call this once per pixel and dimension pair (pixel position,
+/// lens, time, ...) and pass the result as `pattern` to
+/// [`Sampler2D::sample`](crate::Sampler2D::sample). Different dimension pairs
+/// get unrelated patterns ("padding"), which is how wellspread decorrelates
+/// dimensions: never by reusing one pattern.
+///
+/// ```
+/// use wellspread::hash::pattern_seed;
+/// let pixel = pattern_seed(10, 20, 0, 0);
+/// let lens = pattern_seed(10, 20, 0, 1);
+/// assert_ne!(pixel, lens);
+/// assert_eq!(pixel, pattern_seed(10, 20, 0, 0));
+/// ```
+#[inline]
+#[must_use]
+pub const fn pattern_seed(x: u32, y: u32, frame: u32, dimension: u32) -> u32 {
+    hash_combine(hash_combine(hash_combine(hash_u32(x), y), frame), dimension)
+}
+
+/// A pseudo-random bijection of `[0, len)`: element `index` of permutation
+/// `pattern` (Kensler 2013, "Correlated Multi-Jittered Sampling", Pixar
+/// Technical Memo 13-01, listing 3).
+///
+/// A reversible hash scrambles `index` within the smallest power-of-two
+/// domain that holds `len`; results at or above `len` are hashed again
+/// ("cycle walking", Black & Rogaway 2002) until they fall inside. Each step
+/// lands inside with probability above 1/2, so the expected cost is under two
+/// rounds of about twenty integer operations.
+///
+/// `len` must be at least 1 and `index < len`; an `index` at or above `len`
+/// (checked in debug builds) still returns a value in `[0, len)`.
+///
+/// ```
+/// use wellspread::hash::permute;
+/// let mut seen = [false; 10];
+/// for i in 0..10 {
+///     seen[permute(i, 10, 7) as usize] = true;
+/// }
+/// assert!(seen.iter().all(|&s| s));
+/// ```
+#[inline]
+#[must_use]
+pub fn permute(index: u32, len: u32, pattern: u32) -> u32 {
+    debug_assert!(len >= 1, "permute needs len >= 1");
+    debug_assert!(index < len, "permute index {index} out of range 0..{len}");
+    let mut w = len.wrapping_sub(1);
+    w |= w >> 1;
+    w |= w >> 2;
+    w |= w >> 4;
+    w |= w >> 8;
+    w |= w >> 16;
+    let p = pattern;
+    let mut i = index;
+    // Every step is invertible on the low bits under mask `w`: xor with a
+    // constant, multiplication by an odd constant (low bits of a product depend
+    // only on low bits of the factors), and xor with masked right shifts. The
+    // constants are Kensler's, found by a search for good avalanche.
+    loop {
+        i ^= p;
+        i = i.wrapping_mul(0xe170_893d);
+        i ^= p >> 16;
+        i ^= (i & w) >> 4;
+        i ^= p >> 8;
+        i = i.wrapping_mul(0x0929_eb3f);
+        i ^= p >> 23;
+        i ^= (i & w) >> 1;
+        i = i.wrapping_mul(1 | p >> 27);
+        i = i.wrapping_mul(0x6935_fa69);
+        i ^= (i & w) >> 11;
+        i = i.wrapping_mul(0x74dc_b303);
+        i ^= (i & w) >> 2;
+        i = i.wrapping_mul(0x9e50_1cc3);
+        i ^= (i & w) >> 2;
+        i = i.wrapping_mul(0xc860_a3df);
+        i &= w;
+        i ^= i >> 5;
+        if i < len {
+            break;
+        }
+    }
+    // The final rotation by `p` makes permutations of the same `len` differ
+    // even where the hash above agrees (Kensler's listing does the same). The
+    // sum is taken in u64 so that `len` near 2^32 cannot wrap.
+    ((i as u64 + p as u64) % len as u64) as u32
+}
+
+/// 32 random bits for `(index, pattern)`: Kensler 2013's `randfloat` hash
+/// (listing 2) without its final conversion to float.
+#[inline]
+#[must_use]
+pub const fn rand_u32(index: u32, pattern: u32) -> u32 {
+    let mut i = index ^ pattern;
+    i ^= i >> 17;
+    i ^= i >> 10;
+    i = i.wrapping_mul(0xb365_34e5);
+    i ^= i >> 12;
+    i ^= i >> 21;
+    i = i.wrapping_mul(0x93fc_4795);
+    // Kensler's constant: breaks the fixed point at i = 0.
+    i ^= 0xdf6e_307f;
+    i ^= i >> 17;
+    i = i.wrapping_mul(1 | pattern >> 18);
+    i
+}
+
+/// Maps 32 random bits to a float in `[0, 1)` that can never be 1.0.
+///
+/// Keeps the top 24 bits, which f32 represents exactly below 1.0; the
+/// largest result is [`ONE_MINUS_EPSILON`]. (Multiplying all 32 bits by
+/// `2^-32` would round values above `1 - 2^-25` up to 1.0.)
+///
+/// ```
+/// use wellspread::hash::u32_to_unit_f32;
+/// assert_eq!(u32_to_unit_f32(0), 0.0);
+/// assert!(u32_to_unit_f32(u32::MAX) < 1.0);
+/// ```
+#[inline]
+#[must_use]
+pub const fn u32_to_unit_f32(bits: u32) -> f32 {
+    (bits >> (32 - UNIT_BITS)) as f32 * (1.0 / MAX_STRATA as f32)
+}
+
+/// A float inside stratum `stratum` of `strata` equal strata of `[0, 1)`,
+/// at fraction `bits / 2^32` of the way across it.
+///
+/// The result is `t * 2^-24` for an integer `t` chosen in fixed point among
+/// the 24-bit grid points of `[stratum / strata, (stratum + 1) / strata)`,
+/// so it is exactly representable and provably inside the stratum: the
+/// textbook `(stratum + u) / strata` in f32 rounds to the next stratum's
+/// left edge (or to 1.0) once `strata` reaches about 2^12.
+///
+/// Every stratum holds at least one grid point while `strata <= MAX_STRATA`
+/// (`2^24`), which is why samplers that cut an axis into `n` strata accept
+/// at most 2^24 samples. With fewer than `2^24 / strata` grid points per
+/// stratum the offset is quantised to them. An out-of-range `stratum` or
+/// `strata` (checked in debug builds) still yields a value in `[0, 1)`.
+///
+/// ```
+/// use wellspread::hash::stratum_to_unit_f32;
+/// let n = 3_000_017; // prime, and 2^24 / n is not an integer
+/// let x = stratum_to_unit_f32(n - 1, n, u32::MAX);
+/// assert!(x < 1.0);
+/// assert_eq!((x as f64 * n as f64).floor() as u32, n - 1);
+/// ```
+#[inline]
+#[must_use]
+pub const fn stratum_to_unit_f32(stratum: u32, strata: u32, bits: u32) -> f32 {
+    debug_assert!(strata >= 1 && strata <= MAX_STRATA && stratum < strata);
+    let strata = strata as u64;
+    let start = ((stratum as u64) << UNIT_BITS).div_ceil(strata);
+    let end = ((stratum as u64 + 1) << UNIT_BITS).div_ceil(strata);
+    // end > start whenever strata <= 2^24; `saturating_sub` and the `min`
+    // keep a release build with bad arguments inside [0, 1).
+    let t = start + ((end.saturating_sub(start) * bits as u64) >> 32);
+    let t = if t < MAX_STRATA as u64 {
+        t
+    } else {
+        MAX_STRATA as u64 - 1
+    };
+    t as f32 * (1.0 / MAX_STRATA as f32)
+}
+
+/// Salts that split one hashed pattern into independent seeds, one per
+/// random choice a sampler makes (sample order, x shuffle, y shuffle, x
+/// jitter, y jitter). Samplers compute `hash_u32(pattern) ^ SALT`, which
+/// costs one hash per sample instead of one per choice; the constants are
+/// Kensler's (2013) pattern multipliers, odd with about half their bits
+/// set, reused here as xor salts so that pattern 0 still
+/// yields five unrelated seeds.
+pub(crate) mod salt {
+    pub(crate) const ORDER: u32 = 0x51633e2d;
+    pub(crate) const SHUFFLE_X: u32 = 0xa511e9b3;
+    pub(crate) const SHUFFLE_Y: u32 = 0x63d83595;
+    pub(crate) const JITTER_X: u32 = 0xa399d265;
+    pub(crate) const JITTER_Y: u32 = 0x711ad6a5;
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn permute_is_a_bijection_for_many_lengths_and_patterns() {
+        for len in (1..=70).chain([127, 128, 129, 1000, 4097]) {
+            for pattern in [0, 1, 0xdead_beef, u32::MAX] {
+                let mut seen = std::vec![false; len as usize];
+                for i in 0..len {
+                    let j = permute(i, len, pattern);
+                    assert!(j < len);
+                    assert!(!seen[j as usize], "len {len} pattern {pattern}: {j} twice");
+                    seen[j as usize] = true;
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn permute_differs_between_patterns() {
+        let a: std::vec::Vec<u32> = (0..64).map(|i| permute(i, 64, 1)).collect();
+        let b: std::vec::Vec<u32> = (0..64).map(|i| permute(i, 64, 2)).collect();
+        assert_ne!(a, b);
+    }
+
+    #[test]
+    fn permute_handles_lengths_near_u32_max() {
+        for i in [0, 1, u32::MAX - 2] {
+            assert!(permute(i, u32::MAX - 1, 12345) < u32::MAX - 1);
+        }
+    }
+
+    #[test]
+    fn unit_f32_edges() {
+        assert_eq!(u32_to_unit_f32(u32::MAX), ONE_MINUS_EPSILON);
+        assert_eq!(u32_to_unit_f32(1 << 8), 1.0 / 16_777_216.0);
+    }
+
+    #[test]
+    fn stratum_values_stay_in_their_stratum() {
+        for strata in [
+            1u32,
+            2,
+            3,
+            7,
+            4095,
+            4096,
+            4097,
+            65_537,
+            1 << 20,
+            16_777_213,
+            MAX_STRATA,
+        ] {
+            for stratum in [0, 1 % strata, strata / 2, strata - 1] {
+                for bits in [0, 1, 1 << 31, u32::MAX - 1, u32::MAX] {
+                    let x = stratum_to_unit_f32(stratum, strata, bits);
+                    assert!((0.0..1.0).contains(&x));
+                    let s = (x as f64 * strata as f64).floor() as u32;
+                    assert_eq!(s, stratum, "strata {strata} bits {bits}: {x}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn hashes_are_pinned() {
+        // Golden values, cross-checked against an independent Python
+        // transcription: a change here changes every sample wellspread makes.
+        assert_eq!(hash_u32(0), 0);
+        assert_eq!(hash_u32(1), 0x6889_90c0);
+        assert_eq!(rand_u32(0, 0), 0xdf6e_5fc8);
+        assert_eq!(permute(3, 10, 42), 8);
+    }
+}

@@ -1,0 +1,93 @@
+//! The one trait every sampler implements.
+
+use glam::Vec2;
+
+/// A set of `len()` well-distributed points in `[0, 1)^2`, with random access.
+///
+/// Sample `index` of pattern `pattern` is a pure function of the two: no
+/// state, no tables, no allocation, so any thread rendering any tile gets the
+/// same point. `pattern` picks one of 2^32 independent randomisations (one
+/// per pixel and dimension pair, see [`pattern_seed`](crate::hash::pattern_seed)).
+///
+/// Both coordinates of every point are in `[0, 1)` after f32 rounding, for
+/// every index and pattern: the contract every sampler is tested against.
+///
+/// ```
+/// use wellspread::{CorrelatedMultiJittered, Sampler2D};
+/// let sampler = CorrelatedMultiJittered::new(16)?;
+/// let mut points = [wellspread::glam::Vec2::ZERO; 16];
+/// sampler.fill(7, &mut points);
+/// assert_eq!(points[3], sampler.sample(3, 7));
+/// # Ok::<(), wellspread::Error>(())
+/// ```
+pub trait Sampler2D {
+    /// Number of samples in one pattern.
+    fn len(&self) -> u32;
+
+    /// Always `false`: constructors reject zero samples. Present because
+    /// clippy and readers expect `is_empty` beside `len`.
+    fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Sample `index` of pattern `pattern`, in O(1).
+    ///
+    /// `index` must be below [`len`](Sampler2D::len) (checked in debug
+    /// builds). Each sampler documents what a release build returns for a
+    /// larger index; it is always a point in `[0, 1)^2`.
+    fn sample(&self, index: u32, pattern: u32) -> Vec2;
+
+    /// Writes samples `0..out.len()` of pattern `pattern` into `out`: exactly
+    /// what [`sample`](Sampler2D::sample) returns for each index, possibly
+    /// faster.
+    ///
+    /// # Panics
+    ///
+    /// If `out` is longer than [`len`](Sampler2D::len): a set never wraps
+    /// around silently.
+    fn fill(&self, pattern: u32, out: &mut [Vec2]) {
+        check_fill_len(out.len(), self.len());
+        for (index, point) in (0..).zip(out.iter_mut()) {
+            *point = self.sample(index, pattern);
+        }
+    }
+}
+
+/// The panic every `fill` shares, so the message is the same everywhere.
+#[inline]
+pub(crate) fn check_fill_len(requested: usize, len: u32) {
+    assert!(
+        requested <= len as usize,
+        "fill asked for {requested} samples of a set of {len}"
+    );
+}
+
+/// The most square factorisation `columns x rows = n` with `columns <= rows`:
+/// `columns` is the largest divisor of `n` not above `sqrt(n)`.
+///
+/// Squares give `sqrt(n) x sqrt(n)`, `n = 2^(2k+1)` gives `2^k x 2^(k+1)`,
+/// and a prime gives `1 x n`. O(sqrt(n)) time, paid once per constructor.
+pub(crate) fn most_square_grid(n: u32) -> (u32, u32) {
+    debug_assert!(n >= 1);
+    let mut columns = n.isqrt();
+    while n % columns != 0 {
+        columns -= 1;
+    }
+    (columns, n / columns)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::most_square_grid;
+
+    #[test]
+    fn most_square_grid_picks_the_closest_divisors() {
+        assert_eq!(most_square_grid(1), (1, 1));
+        assert_eq!(most_square_grid(16), (4, 4));
+        assert_eq!(most_square_grid(32), (4, 8));
+        assert_eq!(most_square_grid(100), (10, 10));
+        assert_eq!(most_square_grid(12), (3, 4));
+        assert_eq!(most_square_grid(13), (1, 13));
+        assert_eq!(most_square_grid(u32::MAX), (65_535, 65_537));
+    }
+}

@@ -1,0 +1,161 @@
+//! One file per sampler, and [`SamplerKind`] / [`AnySampler`] for choosing
+//! one by name at run time (tools, configuration files, command lines).
+
+mod correlated_multi_jittered;
+mod jittered;
+mod multi_jittered;
+mod n_rooks;
+mod random;
+mod regular;
+
+use core::fmt;
+use core::str::FromStr;
+
+use glam::Vec2;
+
+pub use correlated_multi_jittered::CorrelatedMultiJittered;
+pub use jittered::Jittered;
+pub use multi_jittered::MultiJittered;
+pub use n_rooks::{LatinHypercube, NRooks};
+pub use random::Random;
+pub use regular::Regular;
+
+use crate::{Error, Sampler2D};
+
+/// Declares the sampler list once: the kind enum, its names, the dispatching
+/// enum and its `Sampler2D` impl all come from this one table.
+macro_rules! sampler_kinds {
+    ($($variant:ident => $name:literal,)*) => {
+        /// Every sampler wellspread offers, named as the tools name them.
+        ///
+        /// ```
+        /// use wellspread::{SamplerKind, Sampler2D};
+        /// let kind: SamplerKind = "multi-jittered".parse()?;
+        /// let sampler = kind.build(64)?;
+        /// assert_eq!(sampler.len(), 64);
+        /// assert_eq!(kind.name(), "multi-jittered");
+        /// # Ok::<(), Box<dyn std::error::Error>>(())
+        /// ```
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+        #[non_exhaustive]
+        pub enum SamplerKind {
+            $(
+                #[doc = concat!("[`", stringify!($variant), "`], named `", $name, "`.")]
+                $variant,
+            )*
+        }
+
+        impl SamplerKind {
+            /// All kinds, in the order tools list them: from the baseline
+            /// to the best distributed.
+            pub const ALL: &'static [SamplerKind] = &[$(SamplerKind::$variant,)*];
+
+            /// The kebab-case name the tools use (`"n-rooks"`, ...).
+            #[must_use]
+            pub const fn name(self) -> &'static str {
+                match self {
+                    $(SamplerKind::$variant => $name,)*
+                }
+            }
+
+            /// The sampler of this kind for `n` samples, through its checked
+            /// constructor.
+            ///
+            /// # Errors
+            ///
+            /// Whatever that constructor rejects (`n = 0`, too large an `n`).
+            pub fn build(self, n: u32) -> Result<AnySampler, Error> {
+                Ok(match self {
+                    $(SamplerKind::$variant => AnySampler::$variant($variant::new(n)?),)*
+                })
+            }
+        }
+
+        /// Any one of wellspread's samplers, chosen at run time, with static
+        /// dispatch (a `match`, no allocation).
+        #[derive(Clone, Copy, Debug, PartialEq)]
+        #[non_exhaustive]
+        pub enum AnySampler {
+            $(
+                #[doc = concat!("A [`", stringify!($variant), "`].")]
+                $variant($variant),
+            )*
+        }
+
+        impl AnySampler {
+            /// Which kind of sampler this is.
+            #[must_use]
+            pub const fn kind(&self) -> SamplerKind {
+                match self {
+                    $(AnySampler::$variant(_) => SamplerKind::$variant,)*
+                }
+            }
+        }
+
+        impl Sampler2D for AnySampler {
+            #[inline]
+            fn len(&self) -> u32 {
+                match self {
+                    $(AnySampler::$variant(s) => s.len(),)*
+                }
+            }
+
+            #[inline]
+            fn sample(&self, index: u32, pattern: u32) -> Vec2 {
+                match self {
+                    $(AnySampler::$variant(s) => s.sample(index, pattern),)*
+                }
+            }
+
+            #[inline]
+            fn fill(&self, pattern: u32, out: &mut [Vec2]) {
+                match self {
+                    $(AnySampler::$variant(s) => s.fill(pattern, out),)*
+                }
+            }
+        }
+    };
+}
+
+sampler_kinds! {
+    Regular => "regular",
+    Random => "random",
+    Jittered => "jittered",
+    NRooks => "n-rooks",
+    MultiJittered => "multi-jittered",
+    CorrelatedMultiJittered => "correlated-multi-jittered",
+}
+
+impl fmt::Display for SamplerKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// The error for a name that is not a sampler's; its message lists the names.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct UnknownSampler;
+
+impl fmt::Display for UnknownSampler {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str("unknown sampler; expected one of:")?;
+        for kind in SamplerKind::ALL {
+            write!(f, " {kind}")?;
+        }
+        Ok(())
+    }
+}
+
+impl core::error::Error for UnknownSampler {}
+
+impl FromStr for SamplerKind {
+    type Err = UnknownSampler;
+
+    fn from_str(name: &str) -> Result<Self, Self::Err> {
+        SamplerKind::ALL
+            .iter()
+            .copied()
+            .find(|kind| kind.name() == name)
+            .ok_or(UnknownSampler)
+    }
+}

@@ -1,0 +1,131 @@
+use glam::Vec2;
+
+use crate::Error;
+use crate::hash::{hash_combine, hash_u32, permute, rand_u32, salt, stratum_to_unit_f32};
+use crate::sampler::{Sampler2D, most_square_grid};
+use crate::samplers::n_rooks::check_rook_count;
+
+/// Multi-jittered sampling: jittered on a coarse `columns x rows` grid and
+/// n-rooks on the fine `n x n` grid at the same time.
+///
+/// # Properties
+///
+/// - Stratified: exactly one point in each cell of the `columns x rows` grid
+///   (`columns * rows = n`, the most square factorisation, `columns <= rows`).
+/// - Latin: exactly one point in each of the `n` columns and `n` rows of the
+///   fine grid, checked exactly on the f32 values.
+/// - As in Chiu, Shirley & Wang, each coarse column shuffles its fine
+///   sub-columns independently (and each coarse row its sub-rows); compare
+///   [`CorrelatedMultiJittered`](crate::CorrelatedMultiJittered), which
+///   shares one shuffle and spreads points more evenly.
+/// - For a prime `n` the coarse grid is `1 x n`, so the set is n-rooks with
+///   the y strata of jittered: no extra 2D stratification.
+///
+/// # Cost
+///
+/// One hash of the pattern, two [`hash_combine`] for the per-column and
+/// per-row shuffles, three [`permute`] (expected under two rounds each) and
+/// two [`rand_u32`] per sample.
+///
+/// # Limits
+///
+/// `n` at most 2^24 ([`MultiJittered::MAX_SAMPLES`]), the number of f32
+/// strata in `[0, 1)`. The fine grid is never formed as `n * n`, so nothing
+/// overflows. In release builds an index at or above `len()` returns one of
+/// the set's points.
+///
+/// # Examples
+///
+/// ```
+/// use wellspread::{MultiJittered, Sampler2D};
+/// let mj = MultiJittered::new(16)?; // 4 x 4 coarse, 16 x 16 fine
+/// let mut fine_columns = [0; 16];
+/// let mut coarse_cells = [0; 16];
+/// for i in 0..16 {
+///     let p = mj.sample(i, 2);
+///     fine_columns[(p.x * 16.0) as usize] += 1;
+///     coarse_cells[(p.y * 4.0) as usize * 4 + (p.x * 4.0) as usize] += 1;
+/// }
+/// assert_eq!(fine_columns, [1; 16]);
+/// assert_eq!(coarse_cells, [1; 16]);
+/// # Ok::<(), wellspread::Error>(())
+/// ```
+///
+/// # References
+///
+/// Chiu, Shirley & Wang 1994, "Multi-jittered sampling", Graphics Gems IV.
+/// Random access replaces their table shuffles with Kensler's (2013) hashed
+/// permutations: column `c`'s shuffle is `permute(_, rows, hash(seed, c))`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct MultiJittered {
+    columns: u32,
+    rows: u32,
+}
+
+impl MultiJittered {
+    /// The largest `n` accepted: 2^24, the number of distinct f32 strata.
+    pub const MAX_SAMPLES: u32 = crate::hash::MAX_STRATA;
+
+    /// A multi-jittered set of `n` points.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::ZeroSamples`] for `n = 0`; [`Error::TooManySamples`] above
+    /// [`MultiJittered::MAX_SAMPLES`].
+    pub fn new(n: u32) -> Result<Self, Error> {
+        check_rook_count("multi-jittered", n)?;
+        let (columns, rows) = most_square_grid(n);
+        Ok(Self { columns, rows })
+    }
+
+    /// Number of coarse grid columns.
+    #[must_use]
+    pub fn columns(&self) -> u32 {
+        self.columns
+    }
+
+    /// Number of coarse grid rows.
+    #[must_use]
+    pub fn rows(&self) -> u32 {
+        self.rows
+    }
+}
+
+impl Sampler2D for MultiJittered {
+    #[inline]
+    fn len(&self) -> u32 {
+        self.columns * self.rows
+    }
+
+    #[inline]
+    fn sample(&self, index: u32, pattern: u32) -> Vec2 {
+        let n = self.len();
+        debug_assert!(index < n, "index {index} out of range 0..{n}");
+        let seed = hash_u32(pattern);
+        let cell = permute(index, n, seed ^ salt::ORDER);
+        let (column, row) = (cell % self.columns, cell / self.columns);
+        // Coarse column `column` spans fine columns [column * rows, (column +
+        // 1) * rows) and holds one point per coarse row: the column's own
+        // shuffle of its rows picks which fine column each point takes.
+        // Likewise for rows. Distinct shuffles per column make it Chiu et al.'s
+        // (uncorrelated) multi-jitter.
+        let sub_column = permute(row, self.rows, hash_combine(seed ^ salt::SHUFFLE_X, column));
+        let sub_row = permute(
+            column,
+            self.columns,
+            hash_combine(seed ^ salt::SHUFFLE_Y, row),
+        );
+        Vec2::new(
+            stratum_to_unit_f32(
+                column * self.rows + sub_column,
+                n,
+                rand_u32(cell, seed ^ salt::JITTER_X),
+            ),
+            stratum_to_unit_f32(
+                row * self.columns + sub_row,
+                n,
+                rand_u32(cell, seed ^ salt::JITTER_Y),
+            ),
+        )
+    }
+}
