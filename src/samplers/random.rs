@@ -2,7 +2,7 @@ use glam::Vec2;
 
 use crate::Error;
 use crate::hash::{hash_u32, salt, u32_to_unit_f32};
-use crate::sampler::Sampler2D;
+use crate::sampler::{Sampler2D, check_fill_len};
 
 /// Independent uniform points: the baseline every other sampler must beat.
 ///
@@ -53,6 +53,22 @@ impl Random {
     }
 }
 
+impl Random {
+    /// Sample `index` given the pattern's hash `seed`: the one formula
+    /// `sample` and `fill` share.
+    #[inline(always)]
+    fn point(seed: u32, index: u32) -> Vec2 {
+        // Hashing the index before mixing in the seed matters: with
+        // `index ^ seed`, two seeds that differ only in bits below n would
+        // feed the same inputs in another order and so give the same set.
+        // hash_u32 is a bijection, so one pattern's x bits are all distinct;
+        // y hashes x's full 32 bits again with another salt.
+        let bits_x = hash_u32(hash_u32(index) ^ seed ^ salt::JITTER_X);
+        let bits_y = hash_u32(bits_x ^ salt::JITTER_Y);
+        Vec2::new(u32_to_unit_f32(bits_x), u32_to_unit_f32(bits_y))
+    }
+}
+
 impl Sampler2D for Random {
     #[inline]
     fn len(&self) -> u32 {
@@ -62,14 +78,15 @@ impl Sampler2D for Random {
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
         debug_assert!(index < self.n, "index {index} out of range 0..{}", self.n);
+        Self::point(hash_u32(pattern), index)
+    }
+
+    fn fill(&self, pattern: u32, out: &mut [Vec2]) {
+        check_fill_len(out.len(), self.n);
+        // The pattern hash once per set: three hashes per sample, not four.
         let seed = hash_u32(pattern);
-        // Hashing the index before mixing in the seed matters: with
-        // `index ^ seed`, two seeds that differ only in bits below n would
-        // feed the same inputs in another order and so give the same set.
-        // hash_u32 is a bijection, so one pattern's x bits are all distinct;
-        // y hashes x's full 32 bits again with another salt.
-        let bits_x = hash_u32(hash_u32(index) ^ seed ^ salt::JITTER_X);
-        let bits_y = hash_u32(bits_x ^ salt::JITTER_Y);
-        Vec2::new(u32_to_unit_f32(bits_x), u32_to_unit_f32(bits_y))
+        for (index, point) in (0..).zip(out.iter_mut()) {
+            *point = Self::point(seed, index);
+        }
     }
 }
