@@ -150,20 +150,24 @@ fn permute_hash(index: u32, len: u32, w: u32, p: u32) -> u32 {
     }
 }
 
-/// Exact division by a fixed `d` in `[1, 2^32)` as one 64 x 64 -> 128-bit
-/// multiply and a shift, for numerators below 2^49.
+/// Exact division by a fixed `d` in `[1, 2^32)` as a shift (powers of two)
+/// or one 64 x 64 -> 128-bit multiply and a shift, for numerators below 2^49.
 ///
 /// Samplers divide by the same few numbers (`n`, columns, rows) for every
 /// sample; a hardware 64-bit divide costs tens of cycles, the multiply a few.
-/// With `l = ceil(log2 d)` and `m = ceil(2^(49 + l) / d)`, `floor(x / d) =
-/// floor(x * m / 2^(49 + l))` for all `x < 2^49` (Granlund & Montgomery 1994,
-/// "Division by invariant integers using multiplication", Theorem 4.2):
-/// `m * d - 2^(49 + l) < d <= 2^l`, so the error term stays below `1 / d`.
-/// `m < 2^50 + 1` fits in u64 and `x * m` in u128.
+/// For `d` not a power of two, with `l = ceil(log2 d)`, `s = max(64, 49 + l)`
+/// and `m = ceil(2^s / d)`, `floor(x / d) = floor(x * m / 2^s)` for all
+/// `x < 2^(s - l)`, which includes all `x < 2^49` (Granlund & Montgomery
+/// 1994, "Division by invariant integers using multiplication", Theorem 4.2:
+/// `m * d - 2^s < d <= 2^l`, so the error term stays below `1 / d`). Taking
+/// `s >= 64` makes the first shift the free "high word" of the product;
+/// `m < 2^63` fits in u64 (`d >= 3` when `s = 64`, else `m <= 2^50 + 1`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub(crate) struct Divisor {
     d: u32,
+    /// `log2 d` for a power of two, else `s - 64`.
     shift: u32,
+    /// `m`, or 0 for a power of two.
     magic: u64,
 }
 
@@ -178,12 +182,23 @@ impl Divisor {
     pub(crate) const fn new(d: u32) -> Self {
         debug_assert!(d >= 1);
         let d = if d == 0 { 1 } else { d };
+        if d.is_power_of_two() {
+            return Self {
+                d,
+                shift: d.trailing_zeros(),
+                magic: 0,
+            };
+        }
         let l = u32::BITS - (d - 1).leading_zeros();
-        let shift = Self::NUMERATOR_BITS + l;
-        let magic = ((1u128 << shift) + d as u128 - 1) / d as u128;
+        let s = if Self::NUMERATOR_BITS + l > 64 {
+            Self::NUMERATOR_BITS + l
+        } else {
+            64
+        };
+        let magic = ((1u128 << s) + d as u128 - 1) / d as u128;
         Self {
             d,
-            shift,
+            shift: s - 64,
             magic: magic as u64,
         }
     }
@@ -194,11 +209,26 @@ impl Divisor {
         self.d
     }
 
+    /// `log2 d` if `d` is a power of two.
+    #[inline(always)]
+    const fn log2(self) -> Option<u32> {
+        if self.magic == 0 {
+            Some(self.shift)
+        } else {
+            None
+        }
+    }
+
     /// `x / d` for `x < 2^49`.
     #[inline(always)]
     pub(crate) const fn div(self, x: u64) -> u64 {
         debug_assert!(x < 1 << Self::NUMERATOR_BITS);
-        ((x as u128 * self.magic as u128) >> self.shift) as u64
+        // The branch goes the same way for every call on one divisor.
+        if self.magic == 0 {
+            x >> self.shift
+        } else {
+            (((x as u128 * self.magic as u128) >> 64) as u64) >> self.shift
+        }
     }
 
     /// `(x / d, x % d)` for a u32 `x`.
@@ -263,6 +293,17 @@ impl Length {
     #[inline(always)]
     pub(crate) const fn stratum_to_unit_f32(self, stratum: u32, bits: u32) -> f32 {
         debug_assert!(self.get() <= MAX_STRATA && stratum < self.get());
+        if let Some(k) = self.divisor.log2() {
+            if k <= UNIT_BITS {
+                // 2^k strata of width 2^(24 - k): `start` and `end` below
+                // are exact shifts, and `(width * bits) >> 32` is `bits >>
+                // (8 + k)`; the sum stays below 2^24, so no clamp either.
+                // (Shifted as u64: at k = 24 the shift is 32.)
+                let t =
+                    (stratum << (UNIT_BITS - k)) + ((bits as u64) >> (32 - UNIT_BITS + k)) as u32;
+                return t as f32 * (1.0 / MAX_STRATA as f32);
+            }
+        }
         let start = self.divisor.div_ceil((stratum as u64) << UNIT_BITS);
         let end = self.divisor.div_ceil((stratum as u64 + 1) << UNIT_BITS);
         // Same arithmetic as `stratum_to_unit_f32` from here on; with valid

@@ -227,7 +227,13 @@ fn check<S: Sampler2D>(name: &str, sampler: &S, reference: impl Fn(u32, u32) -> 
 fn permute_matches_reference() {
     let mut rng = Inputs(1);
     let mut lens: Vec<u32> = sizes();
-    lens.extend([u32::MAX, u32::MAX - 1, 1 << 31, (1 << 31) + 1, 3_000_000_019]);
+    lens.extend([
+        u32::MAX,
+        u32::MAX - 1,
+        1 << 31,
+        (1 << 31) + 1,
+        3_000_000_019,
+    ]);
     for len in lens {
         for _ in 0..64 {
             let pattern = rng.next();
@@ -248,7 +254,12 @@ fn stratum_to_unit_f32_matches_reference() {
         for _ in 0..64 {
             let stratum = rng.next() % strata;
             let b = rng.next();
-            for (s, bits) in [(stratum, b), (0, 0), (strata - 1, u32::MAX), (stratum, 1 << 31)] {
+            for (s, bits) in [
+                (stratum, b),
+                (0, 0),
+                (strata - 1, u32::MAX),
+                (stratum, 1 << 31),
+            ] {
                 assert_eq!(
                     hash::stratum_to_unit_f32(s, strata, bits).to_bits(),
                     reference::stratum_to_unit_f32(s, strata, bits).to_bits(),
