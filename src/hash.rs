@@ -195,7 +195,7 @@ impl Divisor {
         } else {
             64
         };
-        let magic = ((1u128 << s) + d as u128 - 1) / d as u128;
+        let magic = (1u128 << s).div_ceil(d as u128);
         Self {
             d,
             shift: s - 64,
