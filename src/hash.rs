@@ -8,6 +8,9 @@
 //! Floats are made in one place, [`stratum_to_unit_f32`] (and its special
 //! case [`u32_to_unit_f32`]), which works in 24-bit fixed point and truncates,
 //! so a coordinate is never `1.0` and never lands in the neighbouring stratum.
+//! Samplers call its division-free twin (a crate-private `Length` that
+//! stores the reciprocal of the stratum count), which
+//! `tests/bench_equivalence.rs` checks bit for bit against a frozen copy.
 
 /// Number of fraction bits in every coordinate wellspread produces.
 ///

@@ -24,9 +24,12 @@ use crate::samplers::n_rooks::check_rook_count;
 ///
 /// # Cost
 ///
-/// One hash of the pattern, three [`permute`] (expected under two rounds
-/// each) and two [`rand_u32`] per sample, plus two fixed-point stratum
-/// conversions.
+/// One hash of the pattern, three [`permute`](crate::hash::permute)
+/// (expected under two rounds each) and two [`rand_u32`] per sample, plus two
+/// fixed-point stratum conversions; no division (the sampler stores
+/// reciprocals of its lengths). `fill` hashes the pattern once and tabulates
+/// the two shared shuffles (for grids up to 256 x 256), leaving one permute
+/// per sample.
 ///
 /// # Limits
 ///

@@ -25,8 +25,10 @@ use crate::samplers::regular::check_grid;
 ///
 /// # Cost
 ///
-/// One hash, one [`permute`] (expected under two rounds) and two
-/// [`rand_u32`] per sample, plus two fixed-point stratum conversions.
+/// One hash, one [`permute`](crate::hash::permute) (expected under two
+/// rounds) and two [`rand_u32`] per sample, plus two fixed-point stratum
+/// conversions; no division (the sampler stores reciprocals of its lengths).
+/// `fill` hashes the pattern once.
 ///
 /// # Limits
 ///

@@ -24,8 +24,11 @@ use crate::samplers::n_rooks::check_rook_count;
 /// # Cost
 ///
 /// One hash of the pattern, two [`hash_combine`] for the per-column and
-/// per-row shuffles, three [`permute`] (expected under two rounds each) and
-/// two [`rand_u32`] per sample.
+/// per-row shuffles, three [`permute`](crate::hash::permute) (expected under
+/// two rounds each) and two [`rand_u32`] per sample; no division (the sampler
+/// stores reciprocals of its lengths). `fill` hashes the pattern once and
+/// tabulates the per-column and per-row shuffle seeds (for grids up to 256 x
+/// 256); the three permutes per sample remain.
 ///
 /// # Limits
 ///

@@ -19,8 +19,10 @@ use crate::sampler::{Sampler2D, check_fill_len};
 ///
 /// # Cost
 ///
-/// One hash, two [`permute`] (expected under two rounds each) and two
-/// [`rand_u32`] per sample, plus two fixed-point stratum conversions.
+/// One hash, two [`permute`](crate::hash::permute) (expected under two
+/// rounds each) and two [`rand_u32`] per sample, plus two fixed-point stratum
+/// conversions; no division (the sampler stores the reciprocal of `n`).
+/// `fill` hashes the pattern once.
 ///
 /// # Limits
 ///

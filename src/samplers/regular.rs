@@ -21,8 +21,10 @@ use crate::sampler::{Sampler2D, check_fill_len, most_square_grid};
 ///
 /// # Cost
 ///
-/// One hash and one [`permute`] (expected under two rounds) per sample, plus
-/// two fixed-point stratum conversions.
+/// One hash and one [`permute`](crate::hash::permute) (expected under two
+/// rounds) per sample, plus two fixed-point stratum conversions; no division
+/// (the sampler stores reciprocals of its lengths). `fill` hashes the pattern
+/// once.
 ///
 /// # Limits
 ///
