@@ -378,6 +378,12 @@ fn convergence_svg(title: &str, sizes: &[u32], series: &[(&str, Vec<Option<f64>>
             let _ = writeln!(s, r#"<circle cx="{x}" cy="{y}" r="2.5" fill="{c}"/>"#);
         }
         let ly = top + 10.0 + 18.0 * k as f64;
+        // A log axis cannot show an exact (zero) error.
+        let name = if pts.is_empty() {
+            format!("{name} (0: not drawn)")
+        } else {
+            (*name).to_owned()
+        };
         let _ = writeln!(
             s,
             r#"<line x1="{}" x2="{}" y1="{ly}" y2="{ly}" stroke="{c}" stroke-width="2"/><text x="{}" y="{}" font-size="12">{name}</text>"#,
@@ -401,15 +407,23 @@ fn panels_svg(
 ) -> String {
     let columns = 4usize;
     let rows = names.len().div_ceil(columns).max(1);
-    let (pad, head) = (30.0, 40.0);
+    let (pad, head) = (30.0, 24.0 + 16.0 * title.lines().count() as f64);
     let w = columns as f64 * (size + pad) + pad;
     let h = rows as f64 * (size + pad + 16.0) + head;
     let mut s = svg_open(w, h);
-    let _ = writeln!(
-        s,
-        r#"<text x="{}" y="24" font-size="16" text-anchor="middle">{title}</text>"#,
-        w / 2.0
-    );
+    // A title line, then any further lines smaller.
+    for (line, text) in title.lines().enumerate() {
+        let (y, size) = if line == 0 {
+            (22, 16)
+        } else {
+            (22 + 16 * line, 11)
+        };
+        let _ = writeln!(
+            s,
+            r#"<text x="{}" y="{y}" font-size="{size}" text-anchor="middle">{text}</text>"#,
+            w / 2.0
+        );
+    }
     for (i, name) in names.iter().enumerate() {
         let x = pad + (i % columns) as f64 * (size + pad);
         let y = head + (i / columns) as f64 * (size + pad + 16.0) + 16.0;
@@ -464,7 +478,7 @@ fn spectrum_svg(config: &Config, spectra: &[(&str, Vec<f64>)]) -> String {
     let r = f64::from(config.spectrum_radius);
     let nyquist = f64::from(config.spectrum_n).sqrt();
     let title = format!(
-        "radially averaged power spectrum, n = {}, {} patterns (x: |k| up to {r}, dashed: sqrt(n); y: 0 to {y_max}, clipped; grey: 1 = white noise)",
+        "radially averaged power spectrum, n = {}, mean of {} patterns\nx: |k| from 0 to {r}, dashed at sqrt(n); y: 0 to {y_max} (clipped), grey line at 1 (white noise)",
         config.spectrum_n, config.spectrum_patterns
     );
     panels_svg(&title, &names, size, |i, s| {
