@@ -761,6 +761,44 @@ fn offsets_inside_strata_are_uniform() {
     }
 }
 
+/// Smallest distance between two points of a set (O(n^2); small sets only).
+fn min_distance(points: &[Vec2]) -> f32 {
+    let mut best = f32::INFINITY;
+    for (i, p) in points.iter().enumerate() {
+        for q in &points[..i] {
+            best = best.min(p.distance(*q));
+        }
+    }
+    best
+}
+
+/// CorrelatedMultiJittered's docs claim about twice MultiJittered's mean
+/// minimum distance. Over these 64 patterns the means are 0.055 vs 0.030
+/// (n = 64) and 0.041 vs 0.020 (n = 100), each with a standard error of
+/// about 4% of it, so about 5% on the ratio. Over 200 other patterns the
+/// ratios are 1.74 and 1.87, so asking for 1.5 fails a correct but
+/// differently seeded implementation with probability under 1%; this one
+/// is deterministic (fixed patterns).
+#[test]
+fn correlated_multi_jitter_spreads_points_further_than_multi_jitter() {
+    for n in [64, 100] {
+        let mean_min_distance = |kind: SamplerKind| {
+            let sampler = kind.build(n).unwrap();
+            let total: f32 = (0..64)
+                .map(|pattern| {
+                    let mut points = vec![Vec2::ZERO; n as usize];
+                    sampler.fill(pattern, &mut points);
+                    min_distance(&points)
+                })
+                .sum();
+            total / 64.0
+        };
+        let cmj = mean_min_distance(SamplerKind::CorrelatedMultiJittered);
+        let mj = mean_min_distance(SamplerKind::MultiJittered);
+        assert!(cmj > 1.5 * mj, "n = {n}: CMJ {cmj}, MJ {mj}");
+    }
+}
+
 /// A 16 x 16 histogram of 65,536 points is at least as even as random
 /// points': Pearson's chi-square (255 degrees of freedom) below 380, which
 /// random points exceed with probability 6.3e-7 (Wilson-Hilferty). Stratified
