@@ -309,12 +309,15 @@ fn the_six_samplers_are_all_pinned() {
     }
 }
 
+/// The arguments of `pattern_seed`: `(x, y, frame, dimension)`.
+type PixelFrameDimension = (u32, u32, u32, u32);
+
 /// `pattern_seed(x, y, frame, dimension)`: renderers store and derive
 /// patterns from it, so its values are pinned like the samples.
 #[test]
 fn pattern_seeds_are_pinned() {
     #[rustfmt::skip]
-    let pinned: &[((u32, u32, u32, u32), u32)] = &[
+    let pinned: &[(PixelFrameDimension, u32)] = &[
     ((0, 0, 0, 0), 0x1a5905f6),
     ((1, 0, 0, 0), 0x87e58df0),
     ((0, 1, 0, 0), 0xded7d127),
