@@ -79,8 +79,20 @@ pub const fn pattern_seed(x: u32, y: u32, frame: u32, dimension: u32) -> u32 {
 /// lands inside with probability above 1/2, so the expected cost is under two
 /// rounds of about twenty integer operations.
 ///
+/// The 2^32 patterns do not reach every permutation of short ranges: over
+/// 2 x 10^5 patterns, a length of 4 gives 8 of its 24 permutations and a
+/// length of 8 gives 1,024 of 40,320 (powers of two need no cycle walking,
+/// so the hash's structure shows), while a length of 100 gives a new one
+/// almost every time. Kensler's original has the same limit.
+///
 /// `len` must be at least 1 and `index < len`; an `index` at or above `len`
-/// (checked in debug builds) still returns a value in `[0, len)`.
+/// (checked in debug builds) is reduced modulo `len` first, so it still
+/// returns a value in `[0, len)`. (Walking from outside the range could
+/// loop forever: the hash's cycle through such an index may never enter it.)
+///
+/// # Panics
+///
+/// If `len` is 0.
 ///
 /// ```
 /// use wellspread::hash::permute;
@@ -102,7 +114,8 @@ pub fn permute(index: u32, len: u32, pattern: u32) -> u32 {
     w |= w >> 8;
     w |= w >> 16;
     let p = pattern;
-    let mut i = index;
+    // Only reached with a bad index; panics (division by zero) for len = 0.
+    let mut i = if index < len { index } else { index % len };
     // Every step is invertible on the low bits under mask `w`: xor with a
     // constant, multiplication by an odd constant (low bits of a product depend
     // only on low bits of the factors), and xor with masked right shifts. The
@@ -184,8 +197,13 @@ pub const fn u32_to_unit_f32(bits: u32) -> f32 {
 /// Every stratum holds at least one grid point while `strata <= MAX_STRATA`
 /// (`2^24`), which is why samplers that cut an axis into `n` strata accept
 /// at most 2^24 samples. With fewer than `2^24 / strata` grid points per
-/// stratum the offset is quantised to them. An out-of-range `stratum` or
-/// `strata` (checked in debug builds) still yields a value in `[0, 1)`.
+/// stratum the offset is quantised to them. An out-of-range `stratum`, or
+/// `strata` above 2^24 (checked in debug builds), still yields a value in
+/// `[0, 1)`.
+///
+/// # Panics
+///
+/// If `strata` is 0.
 ///
 /// ```
 /// use wellspread::hash::stratum_to_unit_f32;
@@ -257,6 +275,27 @@ mod tests {
     fn permute_handles_lengths_near_u32_max() {
         for i in [0, 1, u32::MAX - 2] {
             assert!(permute(i, u32::MAX - 1, 12345) < u32::MAX - 1);
+        }
+    }
+
+    #[test]
+    #[should_panic]
+    fn permute_of_an_empty_range_panics() {
+        let _ = permute(0, 0, 1);
+    }
+
+    // Release builds only (debug builds reject the index). Before the index
+    // was reduced, (3, 3, 0) and many others cycle-walked forever.
+    #[cfg(not(debug_assertions))]
+    #[test]
+    fn permute_out_of_range_index_terminates_in_range() {
+        for len in [1, 3, 5, 100, 4097] {
+            for pattern in 0..200 {
+                for index in (len..3 * len).chain([u32::MAX]) {
+                    let j = permute(index, len, pattern);
+                    assert_eq!(j, permute(index % len, len, pattern));
+                }
+            }
         }
     }
 
