@@ -54,8 +54,8 @@ mod samplers;
 pub use error::Error;
 pub use sampler::Sampler2D;
 pub use samplers::{
-    AnySampler, CorrelatedMultiJittered, Jittered, LatinHypercube, MultiJittered, NRooks, Random,
-    Regular, SamplerKind, UnknownSampler,
+    AnySampler, CorrelatedMultiJittered, Halton, Hammersley, Jittered, LatinHypercube,
+    MultiJittered, NRooks, Pmj02, Random, Regular, SamplerKind, Sobol, UnknownSampler,
 };
 
 // The README's usage example runs as a doctest.
