@@ -292,13 +292,16 @@ fn halton_discrepancy_beats_random_and_falls_faster() {
     }
 }
 
+/// A sampler name, a pattern and the bits of its first 8 points.
+type Golden = (&'static str, u32, [(u32, u32); 8]);
+
 /// Golden values: the first 8 samples of each sampler for patterns 0 and
 /// 0xdeadbeef, as `f32::to_bits` of (x, y). Sample values are a contract:
 /// changing any of these is a breaking change and must be recorded in
 /// CHANGELOG.md.
 #[test]
 fn golden_values() {
-    let golden: [(&str, u32, [(u32, u32); 8]); 8] = [
+    let golden: [Golden; 8] = [
         (
             "sobol",
             0x0,

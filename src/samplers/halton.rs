@@ -186,11 +186,13 @@ impl Sampler2D for Halton {
 mod tests {
     use super::*;
 
+    // The most base-3 digits whose strata are all distinct f32 strata.
+    const _: () = assert!(BASE3_STRATA <= crate::hash::MAX_STRATA);
+    const _: () = assert!(BASE3_STRATA * 3 > crate::hash::MAX_STRATA);
+
     #[test]
     fn base3_strata_constant() {
         assert_eq!(3u32.pow(BASE3_DIGITS), BASE3_STRATA);
-        assert!(BASE3_STRATA <= crate::hash::MAX_STRATA);
-        assert!(BASE3_STRATA * 3 > crate::hash::MAX_STRATA);
     }
 
     #[test]

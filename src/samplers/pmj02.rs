@@ -193,8 +193,8 @@ mod tests {
     #[test]
     fn butterfly_is_the_stirling_matrix() {
         let rows = stirling_mod2_rows();
-        for j in 0..33 {
-            assert_eq!(stirling_reversed(1 << j), rows[j], "column {j} of C0");
+        for (j, &row) in rows.iter().enumerate().take(33) {
+            assert_eq!(stirling_reversed(1 << j), row, "column {j} of C0");
         }
         for j in 0..32 {
             let y = (stirling_reversed(1u64 << (j + 1)) >> 1) as u32 as u64;

@@ -137,9 +137,14 @@ impl OwenSeeds {
 /// floats of them.
 #[inline(always)]
 pub(crate) fn scrambled_point(x_reversed: u32, y_reversed: u32, seeds: OwenSeeds) -> Vec2 {
+    // One 64-bit reversal turns both back to natural order: it swaps the
+    // halves and mirrors each, so x ends up in the high half.
+    let packed = owen_scramble_reversed(x_reversed, seeds.x) as u64
+        | (owen_scramble_reversed(y_reversed, seeds.y) as u64) << 32;
+    let natural = packed.reverse_bits();
     Vec2::new(
-        u32_to_unit_f32(owen_scramble_reversed(x_reversed, seeds.x).reverse_bits()),
-        u32_to_unit_f32(owen_scramble_reversed(y_reversed, seeds.y).reverse_bits()),
+        u32_to_unit_f32((natural >> 32) as u32),
+        u32_to_unit_f32(natural as u32),
     )
 }
 
