@@ -23,7 +23,8 @@ const BASE3_STRATA: u32 = 14_348_907;
 ///   input is the index itself;
 /// - base 3 digit by digit: digit `k` of the index is mapped by one of the
 ///   six permutations of `{0, 1, 2}` (a reflection and a rotation), chosen by
-///   a hash chained through digits `0..k`, for the first 15 digits. Digits
+///   a hash of the seed, `k` and digits `0..k` (one [`hash_u32`] per digit),
+///   for the first 15 digits. Digits
 ///   below `3^-15` are a hash of the whole index and pattern, placed in the
 ///   stratum with [`stratum_to_unit_f32`] so the 15-digit stratum is exact.
 ///
@@ -42,8 +43,9 @@ const BASE3_STRATA: u32 = 14_348_907;
 /// # Cost
 ///
 /// One Owen-scramble hash for x; for y, fifteen rounds of a divide by 3
-/// (a multiply) and a 32-bit hash, and one more hash for the low digits: a
-/// few times [`Sobol`](crate::Sobol)'s cost.
+/// (a multiply) and one independent [`hash_u32`], then two more hashes for
+/// the low digits and a fixed-point stratum conversion: about three times
+/// [`Sobol`](crate::Sobol)'s cost.
 ///
 /// # Limits
 ///
@@ -125,28 +127,38 @@ impl HaltonSeeds {
 fn scrambled_radical_inverse_3(index: u32, seed: u32) -> f32 {
     let mut rest = index;
     let mut stratum = 0u32;
-    // `node` names the node of the digit tree: a hash of the seed and of
-    // every index digit so far, so the permutation of digit k depends on
-    // digits 0..k only (the nested scramble).
-    let mut node = seed;
+    // The node of the digit tree above digit k is named by the level k and
+    // the value of digits 0..k, `prefix = index mod 3^k`; hashing the pair
+    // picks the permutation of digit k, so it depends on those digits only
+    // (the nested scramble). Unlike a hash chained from node to node, the
+    // fifteen hashes are independent and run in parallel.
+    let mut prefix = 0u32;
+    let mut weight = 1u32;
+    let mut level_seed = seed;
     for _ in 0..BASE3_DIGITS {
         let digit = rest % 3;
         rest /= 3;
-        let h = hash_u32(node);
-        // One of the six permutations of {0, 1, 2}: reflect if the top bit is
-        // set, then rotate by a value in 0..3 from the next bits (a
+        let h = hash_u32(prefix ^ level_seed);
+        // One of the six permutations of {0, 1, 2}: reflect if the top bit
+        // is set, then rotate by a value in 0..3 from the other bits (a
         // multiply-shift, bias below 2^-30).
         let reflected = if h >> 31 == 1 { 2 - digit } else { digit };
         let rotation = (((h << 1) as u64 * 3) >> 32) as u32;
-        let permuted = (reflected + rotation) % 3;
-        stratum = stratum * 3 + permuted;
-        // The golden-ratio odd constant keeps digit 0 from leaving the node
-        // unchanged up to the hash.
-        node = hash_u32(node ^ digit.wrapping_mul(0x9e37_79b9) ^ 0x2545_f491);
+        stratum = stratum * 3 + (reflected + rotation) % 3;
+        // prefix < 3^15 and weight <= 3^15: no overflow.
+        prefix += digit * weight;
+        weight *= 3;
+        // A new seed per level (the golden-ratio step, odd and with about
+        // half its bits set), so equal prefixes of different lengths differ.
+        level_seed = level_seed.wrapping_add(0x9e37_79b9);
     }
     // The remaining index digits and the pattern pick the position inside
     // the finest stratum.
-    stratum_to_unit_f32(stratum, BASE3_STRATA, hash_combine(node, rest))
+    stratum_to_unit_f32(
+        stratum,
+        BASE3_STRATA,
+        hash_combine(hash_u32(prefix ^ level_seed), rest),
+    )
 }
 
 #[inline(always)]

@@ -1,9 +1,8 @@
 use glam::Vec2;
 
 use crate::Error;
-use crate::hash::owen_scramble;
 use crate::sampler::{Sampler2D, check_fill_len};
-use crate::samplers::sobol::{OwenSeeds, scrambled_point};
+use crate::samplers::sobol::{OwenSeeds, next_reversed, scrambled_point, shuffle_reversed};
 
 /// Progressive multi-jittered (0,2) sequence (pmj02, Christensen, Kensler &
 /// Kilpatrick 2018), generated in O(1) per sample with no tables.
@@ -138,9 +137,10 @@ const fn stirling_reversed(bits: u64) -> u64 {
     w
 }
 
+/// Sample `index` of the sequence, from `index.reverse_bits()`.
 #[inline(always)]
-fn pmj02_point(index: u32, seeds: OwenSeeds) -> Vec2 {
-    let s = owen_scramble(index, seeds.index) as u64;
+fn pmj02_point(reversed_index: u32, seeds: OwenSeeds) -> Vec2 {
+    let s = shuffle_reversed(reversed_index, seeds.index) as u64;
     // C0 for x; C1's column j is C0's column j + 1 one digit down, so y is
     // C0 of the index shifted up one bit, shifted back down. Both results
     // fit in 32 bits (degree at most 31), so the casts only drop zeros.
@@ -159,15 +159,18 @@ impl Sampler2D for Pmj02 {
     /// valid, including those at or above [`len`](Sampler2D::len).
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        pmj02_point(index, OwenSeeds::new(pattern))
+        pmj02_point(index.reverse_bits(), OwenSeeds::new(pattern))
     }
 
     #[inline]
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
         check_fill_len(out.len(), self.n);
         let seeds = OwenSeeds::new(pattern);
+        let mut reversed = 0;
+        // `out.len() <= n <= u32::MAX`, so `index < u32::MAX` throughout.
         for (index, point) in (0..).zip(out.iter_mut()) {
-            *point = pmj02_point(index, seeds);
+            *point = pmj02_point(reversed, seeds);
+            reversed = next_reversed(reversed, index);
         }
     }
 }

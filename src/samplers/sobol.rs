@@ -1,7 +1,9 @@
 use glam::Vec2;
 
 use crate::Error;
-use crate::hash::{hash_u32, owen_scramble, owen_scramble_reversed, salt, u32_to_unit_f32};
+#[cfg(doc)]
+use crate::hash::owen_scramble;
+use crate::hash::{hash_u32, owen_scramble_reversed, salt, u32_to_unit_f32};
 use crate::sampler::{Sampler2D, check_fill_len};
 
 /// The first two dimensions of the Sobol sequence, Owen-scrambled with
@@ -46,9 +48,15 @@ use crate::sampler::{Sampler2D, check_fill_len};
 /// # Cost
 ///
 /// Four [`hash_u32`] of the pattern (once per [`fill`](Sampler2D::fill)),
-/// three Owen-scramble hashes of four multiply-xor steps, four bit reversals
-/// and five xor-shift steps per sample: no loop, no table, no division.
-/// Faster than two calls to `sobol_burley::sample` (one per dimension).
+/// three Owen-scramble hashes of four multiply-xor steps, three bit
+/// reversals (two in `fill`, which steps the reversed index incrementally;
+/// the last one reverses both coordinates in one 64-bit word) and five
+/// xor-shift steps per sample: no loop, no table, no division, about 160
+/// x86-64 instructions for `sample`. About 2.5 to 3 times faster than two
+/// calls to `sobol_burley::sample` (one per dimension), which shuffle the
+/// index and hash the seed once per dimension and loop over the set bits of
+/// a 16-bit index through a direction-number table (and so accept indices
+/// below 2^16 only).
 ///
 /// # Limits
 ///
@@ -172,9 +180,27 @@ pub(crate) const fn pascal_reversed(index: u32) -> u32 {
     y
 }
 
+/// Bit reversal of `index + 1` from that of `index` (`index < u32::MAX`):
+/// incrementing flips the trailing ones and the zero above them, so the
+/// reversed value flips its top `trailing_zeros(index + 1) + 1` bits. Four
+/// instructions instead of a full reversal, for the sequential `fill`s.
 #[inline(always)]
-fn sobol_point(index: u32, seeds: OwenSeeds) -> Vec2 {
-    let s = owen_scramble(index, seeds.index);
+pub(crate) const fn next_reversed(reversed: u32, index: u32) -> u32 {
+    let flipped = (index + 1).trailing_zeros(); // at most 31
+    reversed ^ (u64::MAX << (31 - flipped)) as u32
+}
+
+/// Burley's index shuffle, [`owen_scramble`], taking the index already bit
+/// reversed: `owen_scramble(index, seed) == shuffle_reversed(index.reverse_bits(), seed)`.
+#[inline(always)]
+pub(crate) const fn shuffle_reversed(reversed_index: u32, seed: u32) -> u32 {
+    owen_scramble_reversed(reversed_index, seed).reverse_bits()
+}
+
+/// Sample `index` of the sequence, from `index.reverse_bits()`.
+#[inline(always)]
+fn sobol_point(reversed_index: u32, seeds: OwenSeeds) -> Vec2 {
+    let s = shuffle_reversed(reversed_index, seeds.index);
     // Dimension 0's generator is the identity: its reversed digits are `s`.
     scrambled_point(s, pascal_reversed(s), seeds)
 }
@@ -189,15 +215,18 @@ impl Sampler2D for Sobol {
     /// valid, including those at or above [`len`](Sampler2D::len).
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        sobol_point(index, OwenSeeds::new(pattern))
+        sobol_point(index.reverse_bits(), OwenSeeds::new(pattern))
     }
 
     #[inline]
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
         check_fill_len(out.len(), self.n);
         let seeds = OwenSeeds::new(pattern);
+        let mut reversed = 0;
+        // `out.len() <= n <= u32::MAX`, so `index < u32::MAX` throughout.
         for (index, point) in (0..).zip(out.iter_mut()) {
-            *point = sobol_point(index, seeds);
+            *point = sobol_point(reversed, seeds);
+            reversed = next_reversed(reversed, index);
         }
     }
 }
@@ -205,6 +234,23 @@ impl Sampler2D for Sobol {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn incremental_reversal_and_shuffle_match_the_direct_ones() {
+        let mut reversed = 0;
+        for index in (0..70_000).chain(u32::MAX - 70_000..u32::MAX) {
+            if index == u32::MAX - 70_000 {
+                reversed = index.reverse_bits();
+            }
+            assert_eq!(reversed, index.reverse_bits(), "{index}");
+            assert_eq!(
+                shuffle_reversed(reversed, 0x1234_5678),
+                crate::hash::owen_scramble(index, 0x1234_5678)
+            );
+            reversed = next_reversed(reversed, index);
+        }
+        assert_eq!(reversed, u32::MAX.reverse_bits());
+    }
 
     #[test]
     fn pascal_matches_the_direction_numbers_of_x_plus_1() {
