@@ -174,6 +174,19 @@ fn indices_near_u32_max_stay_in_the_unit_square() {
     }
 }
 
+#[test]
+fn hammersley_at_its_largest_n_stays_in_the_unit_square() {
+    let hammersley = Hammersley::new(Hammersley::MAX_SAMPLES).unwrap();
+    for pattern in [0, 0xdead_beef, u32::MAX] {
+        for index in (0..4096).chain(Hammersley::MAX_SAMPLES - 4096..Hammersley::MAX_SAMPLES) {
+            let p = hammersley.sample(index, pattern);
+            assert!((0.0..1.0).contains(&p.x) && (0.0..1.0).contains(&p.y));
+            // Column `index` of 2^24, exactly.
+            assert_eq!((p.x as f64 * Hammersley::MAX_SAMPLES as f64) as u32, index);
+        }
+    }
+}
+
 /// The f32 edge: the full prefix of 2^24 points, the largest whose boxes f32
 /// can still tell apart. Checks the shapes `2^-a x 2^-(24-a)` for `a` in
 /// {0, 12, 24} (Latin in both axes at the f32 spacing, and the 4096 x 4096

@@ -206,6 +206,14 @@ mod tests {
     }
 
     #[test]
+    fn pmj02_is_a_02_sequence_up_to_2_to_the_32() {
+        assert!(crate::samplers::sobol::tests::is_02_sequence(
+            |j| stirling_reversed(1 << j) as u32,
+            |j| (stirling_reversed(1 << (j + 1)) >> 1) as u32,
+        ));
+    }
+
+    #[test]
     fn first_digits_are_pmj02s_first_strata() {
         // Unscrambled, the first four points of the digital sequence sit in
         // the four quadrants, the first two in opposite ones.

@@ -232,8 +232,50 @@ impl Sampler2D for Sobol {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
+
+    /// `true` if the digital sequence whose generator matrices have columns
+    /// `x_column(j)` and `y_column(j)` (reversed bit order: bit `k` is digit
+    /// `k`) is a (0,2)-sequence in base 2 for every `m <= 32`: for each
+    /// shape `d0 + d1 = m`, the first `d0` rows of one matrix and the first
+    /// `d1` of the other, cut to `m` columns, are linearly independent
+    /// (Niederreiter 1992, "Random Number Generation and Quasi-Monte Carlo
+    /// Methods", ch. 4). Owen scrambling keeps the property.
+    pub(crate) fn is_02_sequence(
+        x_column: impl Fn(u32) -> u32,
+        y_column: impl Fn(u32) -> u32,
+    ) -> bool {
+        let row = |column: &dyn Fn(u32) -> u32, k: u32, m: u32| -> u64 {
+            (0..m).fold(0, |r, j| r | ((column(j) >> k & 1) as u64) << j)
+        };
+        for m in 1..=32 {
+            for d0 in 0..=m {
+                let mut basis: std::vec::Vec<u64> = std::vec::Vec::new();
+                let rows = (0..d0)
+                    .map(|k| row(&x_column, k, m))
+                    .chain((0..m - d0).map(|k| row(&y_column, k, m)));
+                for mut v in rows {
+                    for &b in &basis {
+                        v = v.min(v ^ b);
+                    }
+                    if v == 0 {
+                        return false;
+                    }
+                    basis.push(v);
+                    basis.sort_unstable_by(|a, b| b.cmp(a));
+                }
+            }
+        }
+        true
+    }
+
+    #[test]
+    fn sobol_is_a_02_sequence_up_to_2_to_the_32() {
+        assert!(is_02_sequence(|j| 1 << j, |j| pascal_reversed(1 << j)));
+        // And the check has teeth: two equal matrices are not.
+        assert!(!is_02_sequence(|j| 1 << j, |j| 1 << j));
+    }
 
     #[test]
     fn incremental_reversal_and_shuffle_match_the_direct_ones() {
