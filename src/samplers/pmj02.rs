@@ -1,8 +1,9 @@
 use glam::Vec2;
 
 use crate::Error;
+use crate::hash::owen_scramble;
 use crate::sampler::{Sampler2D, check_fill_len};
-use crate::samplers::sobol::{OwenSeeds, next_reversed, scrambled_point, shuffle_reversed};
+use crate::samplers::sobol::{OwenSeeds, bits_to_point, fill_in_lanes, scrambled_bits};
 
 /// Progressive multi-jittered (0,2) sequence (pmj02, Christensen, Kensler &
 /// Kilpatrick 2018), generated in O(1) per sample with no tables.
@@ -22,8 +23,8 @@ use crate::samplers::sobol::{OwenSeeds, next_reversed, scrambled_point, shuffle_
 ///   `x (x + 1) = x^2 + x` mod 2, column `j` of `C0` is the polynomial
 ///   `x^ceil(j/2) (1 + x)^floor(j/2)`. Splitting the index into even and odd
 ///   bits, the coordinate's digit polynomial is `E(x + x^2) + x O(x + x^2)`,
-///   a composition that five masked xor-shift steps evaluate for all 32
-///   digits at once (see `stirling_reversed` in the source). Column `j` of
+///   a composition that four masked xor-shift steps evaluate for all 32
+///   digits at once (see `stirling_x` in the source). Column `j` of
 ///   `C1` is column `j + 1` of `C0` shifted down one digit.
 /// - The index is shuffled and the coordinates Owen-scrambled exactly as in
 ///   [`Sobol`](crate::Sobol) (Burley 2020), so dimension pairs decorrelate
@@ -124,29 +125,33 @@ impl Pmj02 {
 /// of each block of `2^(b+2)` bits (`0xcccc..`: bits 2-3 of every 4;
 /// `0xf0f0..`: bits 4-7 of every 8; ...). Each transformed block of `2^b`
 /// coefficients has degree below `2^(b+1)`, so blocks never overlap, and the
-/// odd half (one bit up) rides along in the same steps. A 64-bit word leaves
-/// room for the 33-bit input of [`Pmj02`]'s y coordinate.
+/// odd half (one bit up) rides along in the same steps. Sixteen coefficients
+/// of each half fit in 32 bits, so four steps do.
 #[inline(always)]
-const fn stirling_reversed(bits: u64) -> u64 {
-    let mut w = bits;
-    w ^= (w & 0xcccc_cccc_cccc_cccc) >> 1;
-    w ^= (w & 0xf0f0_f0f0_f0f0_f0f0) >> 2;
-    w ^= (w & 0xff00_ff00_ff00_ff00) >> 4;
-    w ^= (w & 0xffff_0000_ffff_0000) >> 8;
-    w ^= (w & 0xffff_ffff_0000_0000) >> 16;
+const fn stirling_x(index: u32) -> u32 {
+    let mut w = index;
+    w ^= (w & 0xcccc_cccc) >> 1;
+    w ^= (w & 0xf0f0_f0f0) >> 2;
+    w ^= (w & 0xff00_ff00) >> 4;
+    w ^= (w & 0xffff_0000) >> 8;
     w
 }
 
-/// Sample `index` of the sequence, from `index.reverse_bits()`.
+/// The digits, in reversed bit order, of `C1` applied to the bits of
+/// `index`. Column `j` of `C1` is column `j + 1` of `C0` one digit down, so
+/// this is [`stirling_x`] of the index shifted up one bit, shifted back
+/// down, plus the column of bit 31, which the shift drops: column 32 of
+/// `C0` is `x^16 (1 + x)^16 = x^16 + x^32`, one digit down bits 15 and 31.
 #[inline(always)]
-fn pmj02_point(reversed_index: u32, seeds: OwenSeeds) -> Vec2 {
-    let s = shuffle_reversed(reversed_index, seeds.index) as u64;
-    // C0 for x; C1's column j is C0's column j + 1 one digit down, so y is
-    // C0 of the index shifted up one bit, shifted back down. Both results
-    // fit in 32 bits (degree at most 31), so the casts only drop zeros.
-    let x = stirling_reversed(s) as u32;
-    let y = (stirling_reversed(s << 1) >> 1) as u32;
-    scrambled_point(x, y, seeds)
+const fn stirling_y(index: u32) -> u32 {
+    (stirling_x(index << 1) >> 1) ^ (0u32.wrapping_sub(index >> 31) & 0x8000_8000)
+}
+
+/// Sample `index` of the sequence, in natural-order 0.32 fixed point.
+#[inline(always)]
+fn pmj02_bits(index: u32, seeds: OwenSeeds) -> (u32, u32) {
+    let s = owen_scramble(index, seeds.index);
+    scrambled_bits(stirling_x(s), stirling_y(s), seeds)
 }
 
 impl Sampler2D for Pmj02 {
@@ -159,19 +164,13 @@ impl Sampler2D for Pmj02 {
     /// valid, including those at or above [`len`](Sampler2D::len).
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        pmj02_point(index.reverse_bits(), OwenSeeds::new(pattern))
+        bits_to_point(pmj02_bits(index, OwenSeeds::new(pattern)))
     }
 
     #[inline]
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
         check_fill_len(out.len(), self.n);
-        let seeds = OwenSeeds::new(pattern);
-        let mut reversed = 0;
-        // `out.len() <= n <= u32::MAX`, so `index < u32::MAX` throughout.
-        for (index, point) in (0..).zip(out.iter_mut()) {
-            *point = pmj02_point(reversed, seeds);
-            reversed = next_reversed(reversed, index);
-        }
+        fill_in_lanes(out, OwenSeeds::new(pattern), pmj02_bits);
     }
 }
 
@@ -196,20 +195,25 @@ mod tests {
     #[test]
     fn butterfly_is_the_stirling_matrix() {
         let rows = stirling_mod2_rows();
-        for (j, &row) in rows.iter().enumerate().take(33) {
-            assert_eq!(stirling_reversed(1 << j), row, "column {j} of C0");
+        for (j, &row) in rows.iter().enumerate().take(32) {
+            assert_eq!(stirling_x(1 << j) as u64, row, "column {j} of C0");
+            assert_eq!(
+                stirling_y(1 << j) as u64,
+                rows[j + 1] >> 1,
+                "column {j} of C1"
+            );
         }
-        for j in 0..32 {
-            let y = (stirling_reversed(1u64 << (j + 1)) >> 1) as u32 as u64;
-            assert_eq!(y, rows[j + 1] >> 1, "column {j} of C1");
-        }
+        // Linear, so the columns determine everything.
+        let (a, b) = (0x8765_4321u32, 0x1357_9bdf);
+        assert_eq!(stirling_x(a ^ b), stirling_x(a) ^ stirling_x(b));
+        assert_eq!(stirling_y(a ^ b), stirling_y(a) ^ stirling_y(b));
     }
 
     #[test]
     fn pmj02_is_a_02_sequence_up_to_2_to_the_32() {
         assert!(crate::samplers::sobol::tests::is_02_sequence(
-            |j| stirling_reversed(1 << j) as u32,
-            |j| (stirling_reversed(1 << (j + 1)) >> 1) as u32,
+            |j| stirling_x(1 << j),
+            |j| stirling_y(1 << j),
         ));
     }
 
@@ -217,11 +221,7 @@ mod tests {
     fn first_digits_are_pmj02s_first_strata() {
         // Unscrambled, the first four points of the digital sequence sit in
         // the four quadrants, the first two in opposite ones.
-        let quadrant = |i: u32| {
-            let x = stirling_reversed(i as u64) & 1;
-            let y = (stirling_reversed((i as u64) << 1) >> 1) & 1;
-            (x, y)
-        };
+        let quadrant = |i: u32| (stirling_x(i) & 1, stirling_y(i) & 1);
         assert_eq!(quadrant(0), (0, 0));
         assert_eq!(quadrant(1), (1, 1));
         let mut q: std::vec::Vec<_> = (0..4).map(quadrant).collect();

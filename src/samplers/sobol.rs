@@ -1,9 +1,7 @@
 use glam::Vec2;
 
 use crate::Error;
-#[cfg(doc)]
-use crate::hash::owen_scramble;
-use crate::hash::{hash_u32, owen_scramble_reversed, salt, u32_to_unit_f32};
+use crate::hash::{hash_u32, owen_scramble, owen_scramble_reversed, salt, u32_to_unit_f32};
 use crate::sampler::{Sampler2D, check_fill_len};
 
 /// The first two dimensions of the Sobol sequence, Owen-scrambled with
@@ -48,11 +46,10 @@ use crate::sampler::{Sampler2D, check_fill_len};
 /// # Cost
 ///
 /// Four [`hash_u32`] of the pattern (once per [`fill`](Sampler2D::fill)),
-/// three Owen-scramble hashes of four multiply-xor steps, three bit
-/// reversals (two in `fill`, which steps the reversed index incrementally;
-/// the last one reverses both coordinates in one 64-bit word) and five
-/// xor-shift steps per sample: no loop, no table, no division, about 160
-/// x86-64 instructions for `sample`. About 2.5 to 3 times faster than two
+/// three Owen-scramble hashes of four multiply-xor steps, four bit
+/// reversals and five xor-shift steps per sample: no loop, no table, no
+/// division, about 160 x86-64 instructions for `sample`. `fill` runs eight
+/// indices at a time in SIMD lanes where the target allows. About 2.5 to 3 times faster than two
 /// calls to `sobol_burley::sample` (one per dimension), which shuffle the
 /// index and hash the seed once per dimension and loop over the set bits of
 /// a 16-bit index through a direction-number table (and so accept indices
@@ -141,19 +138,59 @@ impl OwenSeeds {
 }
 
 /// Finishes a point of a shuffled digital (0,2)-sequence: Owen-scrambles
-/// the two coordinates, given as digits in reversed bit order, and makes
-/// floats of them.
+/// the two coordinates, given as digits in reversed bit order, and returns
+/// them in natural order (0.32 fixed point).
 #[inline(always)]
-pub(crate) fn scrambled_point(x_reversed: u32, y_reversed: u32, seeds: OwenSeeds) -> Vec2 {
-    // One 64-bit reversal turns both back to natural order: it swaps the
-    // halves and mirrors each, so x ends up in the high half.
-    let packed = owen_scramble_reversed(x_reversed, seeds.x) as u64
-        | (owen_scramble_reversed(y_reversed, seeds.y) as u64) << 32;
-    let natural = packed.reverse_bits();
-    Vec2::new(
-        u32_to_unit_f32((natural >> 32) as u32),
-        u32_to_unit_f32(natural as u32),
+pub(crate) const fn scrambled_bits(
+    x_reversed: u32,
+    y_reversed: u32,
+    seeds: OwenSeeds,
+) -> (u32, u32) {
+    (
+        owen_scramble_reversed(x_reversed, seeds.x).reverse_bits(),
+        owen_scramble_reversed(y_reversed, seeds.y).reverse_bits(),
     )
+}
+
+/// The point with coordinates `bits / 2^32`, truncated to 24 bits.
+#[inline(always)]
+pub(crate) const fn bits_to_point((x, y): (u32, u32)) -> Vec2 {
+    Vec2::new(u32_to_unit_f32(x), u32_to_unit_f32(y))
+}
+
+/// Points per batch in [`fill_in_lanes`].
+const LANES: usize = 8;
+
+/// `fill` for sequences whose point is `bits_to_point(point_bits(index,
+/// seeds))`, in batches of [`LANES`] independent indices. Every step of a
+/// point is a 32-bit integer operation on its own lane (multiplies, shifts,
+/// masks, bit reversals), so the compiler can run a batch in SIMD
+/// registers; on x86-64 with only SSE2 this is about a third faster than
+/// one point at a time. The values are exactly those of `sample`, which
+/// calls the same `point_bits`.
+#[inline(always)]
+pub(crate) fn fill_in_lanes(
+    out: &mut [Vec2],
+    seeds: OwenSeeds,
+    point_bits: impl Fn(u32, OwenSeeds) -> (u32, u32),
+) {
+    // Callers check `out.len() <= n <= u32::MAX`, so indices fit in u32.
+    let mut chunks = out.chunks_exact_mut(LANES);
+    let mut base = 0u32;
+    for chunk in &mut chunks {
+        let mut x = [0u32; LANES];
+        let mut y = [0u32; LANES];
+        for (lane, (x, y)) in (0..).zip(x.iter_mut().zip(y.iter_mut())) {
+            (*x, *y) = point_bits(base + lane, seeds);
+        }
+        for ((point, &x), &y) in chunk.iter_mut().zip(&x).zip(&y) {
+            *point = bits_to_point((x, y));
+        }
+        base += LANES as u32;
+    }
+    for (index, point) in (base..).zip(chunks.into_remainder()) {
+        *point = bits_to_point(point_bits(index, seeds));
+    }
 }
 
 /// Sobol dimension 1 of `index`, in reversed bit order (bit `k` is the digit
@@ -180,29 +217,12 @@ pub(crate) const fn pascal_reversed(index: u32) -> u32 {
     y
 }
 
-/// Bit reversal of `index + 1` from that of `index` (`index < u32::MAX`):
-/// incrementing flips the trailing ones and the zero above them, so the
-/// reversed value flips its top `trailing_zeros(index + 1) + 1` bits. Four
-/// instructions instead of a full reversal, for the sequential `fill`s.
+/// Sample `index` of the sequence, in natural-order 0.32 fixed point.
 #[inline(always)]
-pub(crate) const fn next_reversed(reversed: u32, index: u32) -> u32 {
-    let flipped = (index + 1).trailing_zeros(); // at most 31
-    reversed ^ (u64::MAX << (31 - flipped)) as u32
-}
-
-/// Burley's index shuffle, [`owen_scramble`], taking the index already bit
-/// reversed: `owen_scramble(index, seed) == shuffle_reversed(index.reverse_bits(), seed)`.
-#[inline(always)]
-pub(crate) const fn shuffle_reversed(reversed_index: u32, seed: u32) -> u32 {
-    owen_scramble_reversed(reversed_index, seed).reverse_bits()
-}
-
-/// Sample `index` of the sequence, from `index.reverse_bits()`.
-#[inline(always)]
-fn sobol_point(reversed_index: u32, seeds: OwenSeeds) -> Vec2 {
-    let s = shuffle_reversed(reversed_index, seeds.index);
+fn sobol_bits(index: u32, seeds: OwenSeeds) -> (u32, u32) {
+    let s = owen_scramble(index, seeds.index);
     // Dimension 0's generator is the identity: its reversed digits are `s`.
-    scrambled_point(s, pascal_reversed(s), seeds)
+    scrambled_bits(s, pascal_reversed(s), seeds)
 }
 
 impl Sampler2D for Sobol {
@@ -215,19 +235,13 @@ impl Sampler2D for Sobol {
     /// valid, including those at or above [`len`](Sampler2D::len).
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        sobol_point(index.reverse_bits(), OwenSeeds::new(pattern))
+        bits_to_point(sobol_bits(index, OwenSeeds::new(pattern)))
     }
 
     #[inline]
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
         check_fill_len(out.len(), self.n);
-        let seeds = OwenSeeds::new(pattern);
-        let mut reversed = 0;
-        // `out.len() <= n <= u32::MAX`, so `index < u32::MAX` throughout.
-        for (index, point) in (0..).zip(out.iter_mut()) {
-            *point = sobol_point(reversed, seeds);
-            reversed = next_reversed(reversed, index);
-        }
+        fill_in_lanes(out, OwenSeeds::new(pattern), sobol_bits);
     }
 }
 
@@ -278,20 +292,15 @@ pub(crate) mod tests {
     }
 
     #[test]
-    fn incremental_reversal_and_shuffle_match_the_direct_ones() {
-        let mut reversed = 0;
-        for index in (0..70_000).chain(u32::MAX - 70_000..u32::MAX) {
-            if index == u32::MAX - 70_000 {
-                reversed = index.reverse_bits();
+    fn fill_in_lanes_covers_every_length() {
+        let sobol = Sobol::new(100).unwrap();
+        for len in [0, 1, 7, 8, 9, 16, 17, 100] {
+            let mut out = std::vec![Vec2::ZERO; len];
+            sobol.fill(3, &mut out);
+            for (i, p) in (0..).zip(&out) {
+                assert_eq!(*p, sobol.sample(i, 3), "len {len} index {i}");
             }
-            assert_eq!(reversed, index.reverse_bits(), "{index}");
-            assert_eq!(
-                shuffle_reversed(reversed, 0x1234_5678),
-                crate::hash::owen_scramble(index, 0x1234_5678)
-            );
-            reversed = next_reversed(reversed, index);
         }
-        assert_eq!(reversed, u32::MAX.reverse_bits());
     }
 
     #[test]
