@@ -11,13 +11,17 @@ use crate::samplers::sobol::{OwenSeeds, bits_to_point, fill_in_lanes, scrambled_
 /// # Construction
 ///
 /// Christensen et al. build pmj02 point by point, each new point drawn
-/// uniformly in a randomly chosen free stratum. Helmer, Christensen &
-/// Kensler 2021 show that such stochastic choices are exactly Owen
-/// scrambling of a digital base-2 sequence, and derive pmj02's "xor values"
-/// from its generator matrices: the unsigned Stirling numbers of the first
-/// kind mod 2, `C0[k][j] = c(j, k)` for x and `C1[k][j] = c(j + 1, k + 1)`
-/// for y (digit `k` of the coordinate, bit `j` of the index). wellspread
-/// computes that digital sequence directly:
+/// uniformly in a randomly chosen stratum that keeps every elementary
+/// interval filled. Helmer, Christensen & Kensler 2021 show that such
+/// random choices amount to Owen scrambling of a digital base-2 sequence,
+/// and generate pmj02 from "xor values" derived from its generator
+/// matrices: the unsigned Stirling numbers of the first kind mod 2,
+/// `C0[k][j] = c(j, k)` for x and `C1[k][j] = c(j + 1, k + 1)` for y (digit
+/// `k` of the coordinate, bit `j` of the index). (Their recipe applied to
+/// the matrices here reproduces their published pmj02 xor values; the unit
+/// tests check the matrices against the Stirling recurrence and the
+/// (0,2)-sequence rank condition for every `m <= 32`.) wellspread computes
+/// that digital sequence directly:
 ///
 /// - From `x (x + 1) ... (x + n - 1) = sum_k c(n, k) x^k` and
 ///   `x (x + 1) = x^2 + x` mod 2, column `j` of `C0` is the polynomial
@@ -52,8 +56,12 @@ use crate::samplers::sobol::{OwenSeeds, bits_to_point, fill_in_lanes, scrambled_
 ///
 /// # Cost
 ///
-/// As [`Sobol`] plus ten shift/mask/xor operations for the two generator
-/// matrices: no loop, no table, no division.
+/// As [`Sobol`] (three Owen-scramble hashes, four bit reversals) with about
+/// twenty shift/mask/xor operations for the two generator matrices in place
+/// of Sobol's fifteen: no loop, no table, no division. `fill` runs eight
+/// indices at a time in SIMD lanes where the target allows; measured at
+/// about 3.4 times the cost of filling with `rand_pcg::Pcg32` (two `f32`
+/// per point) on x86-64 with SSE2.
 ///
 /// # Limits
 ///

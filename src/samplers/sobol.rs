@@ -7,7 +7,7 @@ use crate::sampler::{Sampler2D, check_fill_len};
 /// The first two dimensions of the Sobol sequence, Owen-scrambled with
 /// Burley's hash and shuffled: a randomised base-2 (0,2)-sequence.
 ///
-/// Sample `index` is computed as follows (Burley 2020, section 3):
+/// Sample `index` is computed as follows (Burley 2020):
 ///
 /// 1. The index is shuffled, `s = owen_scramble(index, seed_index)`
 ///    ([`owen_scramble`]). Aligned blocks of `2^m` indices map onto aligned
