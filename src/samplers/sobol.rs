@@ -60,8 +60,8 @@ use crate::sampler::{Sampler2D, check_fill_len};
 /// Any `n` from 1 to `u32::MAX` for the set size. Coordinates are multiples
 /// of `2^-24`, so nets are exact for prefixes up to `2^24` points; beyond
 /// that the boxes are narrower than the f32 spacing below 1.0 and two points
-/// can share a coordinate. The sequence itself repeats no point before
-/// `2^32`.
+/// can share a coordinate. No index wraps: the `2^32` indices give `2^32`
+/// distinct points in 32-bit fixed point, before the truncation to 24 bits.
 ///
 /// # Examples
 ///
@@ -80,6 +80,21 @@ use crate::sampler::{Sampler2D, check_fill_len};
 /// }
 /// // A sequence: any index is valid.
 /// assert!(sobol.sample(u32::MAX, 42).x < 1.0);
+/// # Ok::<(), wellspread::Error>(())
+/// ```
+///
+/// Padding: one pattern per pixel, frame and dimension pair.
+///
+/// ```
+/// use wellspread::{Sobol, Sampler2D, hash::pattern_seed};
+/// let sobol = Sobol::new(64)?;
+/// let (px, py, frame) = (120, 45, 0);
+/// for i in 0..sobol.len() {
+///     let film = sobol.sample(i, pattern_seed(px, py, frame, 0));
+///     let lens = sobol.sample(i, pattern_seed(px, py, frame, 1));
+///     let time = sobol.sample(i, pattern_seed(px, py, frame, 2)).x;
+///     assert!(film.max_element() < 1.0 && lens.max_element() < 1.0 && time < 1.0);
+/// }
 /// # Ok::<(), wellspread::Error>(())
 /// ```
 ///
