@@ -121,10 +121,10 @@ impl Pmj02 {
 /// The digits, in reversed bit order (bit `k` has weight `2^-(k+1)`), of the
 /// Stirling generator matrix `C0` applied to the bits of `index`.
 ///
-/// Write the index bits as `E(z) + x O(z)`-style halves: even bits `2a` hold
-/// the coefficients of `E`, odd bits `2a + 1` those of `x O`. Column `j` is
-/// `x^ceil(j/2) (1 + x)^floor(j/2)`, so the result is `E(z) + x O(z)` with
-/// `z = x + x^2`. Since squaring is linear mod 2,
+/// Split the index into its even bits `2a`, the coefficients `e_a` of a
+/// polynomial `E`, and its odd bits `2a + 1`, the coefficients `o_a` of `O`.
+/// Column `2a` is `x^a (1 + x)^a = z^a` and column `2a + 1` is `x z^a`, with
+/// `z = x + x^2`, so the result is the polynomial `E(z) + x O(z)`. Since squaring is linear mod 2,
 /// `z^(2^b) = x^(2^b) + x^(2^(b+1))`, and splitting each block of `2^(b+1)`
 /// coefficients into low and high halves `L + z^(2^b) H` gives
 /// `L(z) + (x^(2^b) + x^(2^(b+1))) H(z)`. With coefficient `a` stored at bit
