@@ -443,3 +443,33 @@ fn golden_values() {
         }
     }
 }
+
+/// Owen-scrambled (0,2)-sequences converge like `n^-1.5` on smooth
+/// integrands (Owen 1997): from 16 to 1024 points (64x) the RMSE over
+/// patterns should fall by about 64^1.5 = 512, against 8 for random points.
+/// Seeded (patterns 0..128), so deterministic; measured ratios are 363
+/// (Sobol) and 344 (Pmj02), so the bound of 100 leaves a wide margin.
+#[test]
+fn scrambled_sequences_converge_fast_on_a_smooth_integrand() {
+    // exp(-x^2 - y^2) over the unit square (REFERENCES.md).
+    const EXACT: f64 = 0.557_746_285_351_033;
+    let rmse = |sampler: &wellspread::AnySampler, n: u32| {
+        let mut sum_sq = 0.0;
+        for pattern in 0..128 {
+            let mean = (0..n)
+                .map(|i| {
+                    let p = sampler.sample(i, pattern);
+                    (-(p.x as f64).powi(2) - (p.y as f64).powi(2)).exp()
+                })
+                .sum::<f64>()
+                / n as f64;
+            sum_sq += (mean - EXACT).powi(2);
+        }
+        (sum_sq / 128.0).sqrt()
+    };
+    for kind in [SamplerKind::Sobol, SamplerKind::Pmj02] {
+        let sampler = kind.build(1024).unwrap();
+        let (small, large) = (rmse(&sampler, 16), rmse(&sampler, 1024));
+        assert!(small / large > 100.0, "{kind}: {small} -> {large}");
+    }
+}
