@@ -43,7 +43,7 @@ contact sheets and error-vs-time plots under --out, and prints the trade table.
   --scene LIST    comma-separated scenes (default: all)
   --sampler LIST  comma-separated sampler names (default: all)
   --spp LIST      comma-separated samples per pixel (default: 1,4,16,64,256)
-  --size N|WxH    film size for every scene (default: 256x256 for checker and
+  --size N|WxH    film size for every scene (default: 192x192 for checker and
                   moire; 5x7 and 64x64 for polygon)
   --filter NAME   reconstruction filter: box (default), gaussian, mitchell
   --seed N        pattern seed, the `frame` of pattern_seed (default: 0)
@@ -251,9 +251,10 @@ fn timed<T>(mut f: impl FnMut() -> T) -> (T, f64) {
 fn crop_for(scene: SceneKind, width: u32, height: u32) -> Crop {
     let (fx, fy, fw, fh) = match scene {
         // Around the horizon, where the squares shrink below a pixel.
-        SceneKind::Checker => (0.3, 0.2, 0.375, 0.375),
-        // The Nyquist contour and the false rings beyond it.
-        SceneKind::Moire => (0.25, 0.0, 0.375, 0.375),
+        SceneKind::Checker => (0.3, 0.22, 0.375, 0.375),
+        // Just beyond the Nyquist contour, on the diagonal: where a regular
+        // grid paints false rings and correlated patterns show structure.
+        SceneKind::Moire => (0.3, 0.3, 0.375, 0.375),
         SceneKind::Polygon => (0.0, 0.0, 1.0, 1.0),
     };
     let fraction = |f: f64, n: u32| ((f * f64::from(n)) as u32).min(n - 1);
