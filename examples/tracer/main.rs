@@ -308,6 +308,10 @@ fn run(options: &Options) -> Result<(), String> {
     }
     println!("{}", markdown_table(options, &rows));
     if let Some(path) = &options.report {
+        if let Some(parent) = path.parent().filter(|p| !p.as_os_str().is_empty()) {
+            fs::create_dir_all(parent)
+                .map_err(|e| format!("cannot create {}: {e}", parent.display()))?;
+        }
         fs::write(path, json_report(&rows))
             .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
     }
