@@ -7,11 +7,14 @@
 //!   Gauss-Legendre quadrature, subdivided until every piece spans less than
 //!   one wavelength of `sin(u^2 v^2)`: accurate to about 1e-6, far below any
 //!   sampler's error.
-//! - `checker` (and `polygon` under a wide filter): the render itself with
-//!   4096 correlated multi-jittered samples per pixel (64 x 64 strata) on a
-//!   pattern dimension no compared image uses. Near the horizon no finite
-//!   count is exact; `REFERENCE_SPP` keeps the reference's own error several
-//!   times below the best 256-spp image (see the README's Tracer section).
+//! - `checker`, box filter: exact by clipping each square's projected image
+//!   against the pixel, for every pixel whose footprint meets at most 10^4
+//!   squares. The few rows just below the horizon (and the horizon row,
+//!   which sees squares out to infinity) are sampled densely, as below.
+//! - anything else (`checker` and `polygon` under a wide filter): the render
+//!   itself with 4096 correlated multi-jittered samples per pixel (64 x 64
+//!   strata) on a pattern dimension no compared image uses, 16 times the
+//!   largest default count.
 //!
 //! References take seconds, so they are cached under `out/` keyed by
 //! scene, size and filter, with a format tag that changes when a scene or
@@ -28,7 +31,7 @@ use crate::render::{Filter, Image, Patterns, box_pixel, render};
 use crate::scenes::{Checker, Moire, Polygon, Scene, SceneKind};
 
 /// Samples per pixel for Monte Carlo references: 16 times the largest
-/// measured count.
+/// default count (a larger `--spp` outgrows the reference's accuracy).
 pub const REFERENCE_SPP: u32 = 4096;
 
 /// First bytes of a cache file. Bump the digit whenever a scene, a filter
