@@ -420,10 +420,13 @@ fn run_scene(
                 .collect(),
         })
         .collect();
-    let title = format!("{label}: RMSE vs time per frame");
-    let path = dir.join("trade.svg");
-    fs::write(&path, trade_plot_svg(&title, &series, options.target))
-        .map_err(|e| io_error(&path, e))?;
+    // Nothing to plot if every sampler rejected every count.
+    if !rows.is_empty() {
+        let title = format!("{label}: RMSE vs time per frame");
+        let path = dir.join("trade.svg");
+        fs::write(&path, trade_plot_svg(&title, &series, options.target))
+            .map_err(|e| io_error(&path, e))?;
+    }
     eprintln!("tracer: {label}: wrote {}", dir.display());
     Ok(rows)
 }
