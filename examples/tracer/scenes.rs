@@ -41,9 +41,9 @@ impl SceneKind {
     /// 1 + 4 + 16 + 64 + 256 = 341 samples per pixel) is about 12 M samples
     /// per sampler at 192 x 192. Six samplers took 16 s of CPU time, so ten
     /// need about 15 s of wall time on two idle cores and still fit in a
-    /// minute on two cores shared with other work. The polygon is shown at 5 x 7, where one pixel
-    /// is a large fraction of the shape, and at 64 x 64, where the staircase
-    /// along its edges is plain.
+    /// minute on two cores shared with other work. The polygon is shown at
+    /// 5 x 7, where one pixel is a large fraction of the shape, and at
+    /// 64 x 64, where the staircase along its edges is plain.
     pub fn default_sizes(self) -> &'static [(u32, u32)] {
         match self {
             SceneKind::Checker | SceneKind::Moire => &[(192, 192)],
