@@ -82,8 +82,20 @@ pub const fn pattern_seed(x: u32, y: u32, frame: u32, dimension: u32) -> u32 {
 /// lands inside with probability above 1/2, so the expected cost is under two
 /// rounds of about twenty integer operations.
 ///
+/// The 2^32 patterns do not reach every permutation of short ranges: over
+/// 2 x 10^5 patterns, a length of 4 gives 8 of its 24 permutations and a
+/// length of 8 gives 1,024 of 40,320 (powers of two need no cycle walking,
+/// so the hash's structure shows), while a length of 100 gives a new one
+/// almost every time. Kensler's original has the same limit.
+///
 /// `len` must be at least 1 and `index < len`; an `index` at or above `len`
-/// (checked in debug builds) still returns a value in `[0, len)`.
+/// (checked in debug builds) is reduced modulo `len` first, so it still
+/// returns a value in `[0, len)`. (Walking from outside the range could
+/// loop forever: the hash's cycle through such an index may never enter it.)
+///
+/// # Panics
+///
+/// If `len` is 0.
 ///
 /// ```
 /// use wellspread::hash::permute;
@@ -98,6 +110,8 @@ pub const fn pattern_seed(x: u32, y: u32, frame: u32, dimension: u32) -> u32 {
 pub fn permute(index: u32, len: u32, pattern: u32) -> u32 {
     debug_assert!(len >= 1, "permute needs len >= 1");
     debug_assert!(index < len, "permute index {index} out of range 0..{len}");
+    // Only reached with a bad index; panics (division by zero) for len = 0.
+    let index = if index < len { index } else { index % len };
     let i = permute_hash(index, len, permute_mask(len), pattern);
     // The final rotation by `p` makes permutations of the same `len` differ
     // even where the hash above agrees (Kensler's listing does the same). The
@@ -339,6 +353,13 @@ impl Permutation {
     pub(crate) fn apply(&self, index: u32) -> u32 {
         let len = self.len.get();
         debug_assert!(index < len, "permute index {index} out of range 0..{len}");
+        // As in `permute`: a bad index is reduced first, or the walk could
+        // loop forever.
+        let index = if index < len {
+            index
+        } else {
+            self.len.div_rem(index).1
+        };
         let i = permute_hash(index, len, self.len.mask, self.pattern);
         // i + rotation < 2 len <= 2^33: summed in u64 so that it cannot wrap.
         let sum = i as u64 + self.rotation as u64;
@@ -398,8 +419,13 @@ pub const fn u32_to_unit_f32(bits: u32) -> f32 {
 /// Every stratum holds at least one grid point while `strata <= MAX_STRATA`
 /// (`2^24`), which is why samplers that cut an axis into `n` strata accept
 /// at most 2^24 samples. With fewer than `2^24 / strata` grid points per
-/// stratum the offset is quantised to them. An out-of-range `stratum` or
-/// `strata` (checked in debug builds) still yields a value in `[0, 1)`.
+/// stratum the offset is quantised to them. An out-of-range `stratum`, or
+/// `strata` above 2^24 (checked in debug builds), still yields a value in
+/// `[0, 1)`.
+///
+/// # Panics
+///
+/// If `strata` is 0.
 ///
 /// ```
 /// use wellspread::hash::stratum_to_unit_f32;
@@ -441,6 +467,85 @@ pub(crate) mod salt {
     pub(crate) const JITTER_Y: u32 = 0x711ad6a5;
 }
 
+// ---------------------------------------------------------------------------
+// Base-2 digit scrambling for progressive sequences (Sobol, pmj02, Halton,
+// Hammersley). Added for issue #6; nothing above this line changed.
+// ---------------------------------------------------------------------------
+
+/// The base-2 radical inverse (van der Corput) of `index` in 0.32 fixed
+/// point: the bits of `index` mirrored about the binary point, so the result
+/// is `radical_inverse_2(index) / 2^32`.
+///
+/// This is also the "reversed-bit" form the scrambles below work in: bit `k`
+/// of a reversed value is the digit of weight `2^-(k+1)`.
+///
+/// ```
+/// use wellspread::hash::radical_inverse_2;
+/// assert_eq!(radical_inverse_2(1), 1 << 31); // 1/2
+/// assert_eq!(radical_inverse_2(6), 3 << 29); // 0.011 in binary = 3/8
+/// ```
+#[inline]
+#[must_use]
+pub const fn radical_inverse_2(index: u32) -> u32 {
+    index.reverse_bits()
+}
+
+/// Owen scrambling (a nested uniform scramble) of a value given in reversed
+/// bit order: the hash-based Laine-Karras permutation of Burley 2020,
+/// "Practical Hash-based Owen Scrambling", JCGT 9(4) (building on Laine &
+/// Karras 2011, "Stratified Sampling for Stochastic Transparency").
+///
+/// In reversed order bit 0 is the most significant fraction digit. Every step
+/// below changes bit `k` only as a function of bits `0..=k` and the seed
+/// (adding the seed carries upwards; `x * c` with an even `c` has bit `k`
+/// made of bits `< k`), so each digit is flipped by a hash of the digits
+/// above it: the defining property of Owen's nested scramble. It is a
+/// bijection of `u32` for every seed, and every base-2 elementary interval
+/// maps onto one of the same size, so (t, m, 2)-nets stay nets.
+///
+/// ```
+/// use wellspread::hash::owen_scramble_reversed;
+/// // The most significant digit (bit 0 here) flips or not by the seed alone.
+/// let flip = owen_scramble_reversed(0, 7) & 1;
+/// assert!((0..64).all(|x| (owen_scramble_reversed(x, 7) ^ x) & 1 == flip));
+/// ```
+#[inline]
+#[must_use]
+pub const fn owen_scramble_reversed(mut x: u32, seed: u32) -> u32 {
+    // Burley's seed add and four even multipliers (his improvement on
+    // Laine & Karras's hash): evenness is what keeps each step upward-only.
+    x = x.wrapping_add(seed);
+    x ^= x.wrapping_mul(0x6c50_b47c);
+    x ^= x.wrapping_mul(0xb82f_1e52);
+    x ^= x.wrapping_mul(0xc7af_e638);
+    x ^= x.wrapping_mul(0x8d22_f6e6);
+    x
+}
+
+/// Owen scrambling of a 0.32 fixed-point value in natural bit order (bit 31
+/// is the digit of weight 1/2): [`owen_scramble_reversed`] between two
+/// bit reversals, Burley 2020's `nested_uniform_scramble`.
+///
+/// Applied to a sample *index* it is Burley's shuffle: bit `k` of the result
+/// depends only on bits `k..32` of `index`, so for every `m` the aligned
+/// blocks of `2^m` consecutive indices are permuted among themselves, and the
+/// first `2^m` shuffled indices form one aligned block. A (0,2)-sequence is a
+/// (0,m,2)-net on every aligned block, so the shuffle keeps every
+/// power-of-two prefix a net while making prefixes of different seeds
+/// independent.
+///
+/// ```
+/// use wellspread::hash::owen_scramble;
+/// let mut block: Vec<u32> = (0..16).map(|i| owen_scramble(i, 99) / 16).collect();
+/// block.dedup();
+/// assert_eq!(block.len(), 1); // the first 16 land in one aligned block of 16
+/// ```
+#[inline]
+#[must_use]
+pub const fn owen_scramble(x: u32, seed: u32) -> u32 {
+    owen_scramble_reversed(x.reverse_bits(), seed).reverse_bits()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -471,6 +576,27 @@ mod tests {
     fn permute_handles_lengths_near_u32_max() {
         for i in [0, 1, u32::MAX - 2] {
             assert!(permute(i, u32::MAX - 1, 12345) < u32::MAX - 1);
+        }
+    }
+
+    #[test]
+    #[should_panic]
+    fn permute_of_an_empty_range_panics() {
+        let _ = permute(0, 0, 1);
+    }
+
+    // Release builds only (debug builds reject the index). Before the index
+    // was reduced, (3, 3, 0) and many others cycle-walked forever.
+    #[cfg(not(debug_assertions))]
+    #[test]
+    fn permute_out_of_range_index_terminates_in_range() {
+        for len in [1, 3, 5, 100, 4097] {
+            for pattern in 0..200 {
+                for index in (len..3 * len).chain([u32::MAX]) {
+                    let j = permute(index, len, pattern);
+                    assert_eq!(j, permute(index % len, len, pattern));
+                }
+            }
         }
     }
 
@@ -543,5 +669,47 @@ mod tests {
         assert_eq!(hash_u32(1), 0x6889_90c0);
         assert_eq!(rand_u32(0, 0), 0xdf6e_5fc8);
         assert_eq!(permute(3, 10, 42), 8);
+    }
+    #[test]
+    fn owen_scramble_is_nested_and_bijective() {
+        for seed in [0, 1, 0xdead_beef, u32::MAX] {
+            // Values sharing their top k digits keep sharing them (and no
+            // more), so elementary intervals map onto elementary intervals.
+            for (x, y) in [
+                (0x1234_5678u32, 0x1234_9999u32),
+                (0, 1),
+                (u32::MAX, 0x8000_0000),
+            ] {
+                let shared = (x ^ y).leading_zeros();
+                let (sx, sy) = (owen_scramble(x, seed), owen_scramble(y, seed));
+                assert_eq!(
+                    (sx ^ sy).leading_zeros(),
+                    shared,
+                    "{x:#x} {y:#x} seed {seed:#x}"
+                );
+            }
+            // A bijection: the 2^16 values with fixed low bits map to
+            // distinct values.
+            let mut seen = std::vec![false; 1 << 16];
+            for i in 0..1u32 << 16 {
+                let r = owen_scramble_reversed(i, seed) & 0xffff;
+                assert!(!seen[r as usize]);
+                seen[r as usize] = true;
+            }
+        }
+    }
+
+    #[test]
+    fn owen_scrambles_are_pinned() {
+        // Part of every Sobol, Pmj02, Halton and Hammersley sample; values
+        // cross-checked against an independent Python transcription.
+        assert_eq!(radical_inverse_2(1), 0x8000_0000);
+        assert_eq!(owen_scramble_reversed(0, 0), 0);
+        assert_eq!(owen_scramble_reversed(1, 0), 0x3707_b665);
+        assert_eq!(
+            owen_scramble_reversed(0x1234_5678, 0xdead_beef),
+            0x023f_ba03
+        );
+        assert_eq!(owen_scramble(0x8000_0000, 0), 0xa66d_e0ec);
     }
 }

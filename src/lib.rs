@@ -4,7 +4,10 @@
 //! rays go decides how much aliasing and noise the image has. wellspread
 //! generates the patterns graphics engineers know (regular, random,
 //! jittered, n-rooks, multi-jittered) and better ones (correlated
-//! multi-jitter), and measures them ([`metrics`]).
+//! multi-jitter, and the progressive low-discrepancy sequences [`Sobol`],
+//! [`Pmj02`], [`Halton`] and [`Hammersley`]), and measures them
+//! ([`metrics`]). The sequences accept any index below 2^32 and keep their
+//! guarantees at every power-of-two prefix.
 //!
 //! Every sampler implements [`Sampler2D`]: sample `index` of pattern
 //! `pattern` in O(1), with no tables and no shared state, so any thread
@@ -54,8 +57,8 @@ mod samplers;
 pub use error::Error;
 pub use sampler::Sampler2D;
 pub use samplers::{
-    AnySampler, CorrelatedMultiJittered, Jittered, LatinHypercube, MultiJittered, NRooks, Random,
-    Regular, SamplerKind, UnknownSampler,
+    AnySampler, CorrelatedMultiJittered, Halton, Hammersley, Jittered, LatinHypercube,
+    MultiJittered, NRooks, Pmj02, Random, Regular, SamplerKind, Sobol, UnknownSampler,
 };
 
 // The README's usage example runs as a doctest.

@@ -31,7 +31,7 @@ mod reference {
         w |= w >> 8;
         w |= w >> 16;
         let p = pattern;
-        let mut i = index;
+        let mut i = if index < len { index } else { index % len };
         loop {
             i ^= p;
             i = i.wrapping_mul(0xe170_893d);
@@ -82,7 +82,7 @@ mod reference {
 
     pub fn random(index: u32, pattern: u32) -> Vec2 {
         let seed = hash_u32(pattern);
-        let bits_x = hash_u32(hash_u32(index) ^ seed ^ JITTER_X);
+        let bits_x = hash_combine(seed ^ JITTER_X, index);
         let bits_y = hash_u32(bits_x ^ JITTER_Y);
         Vec2::new(unit(bits_x), unit(bits_y))
     }

@@ -15,9 +15,10 @@ use crate::samplers::n_rooks::check_rook_count;
 ///   (`columns * rows = n`, the most square factorisation, `columns <= rows`).
 /// - Latin: exactly one point in each of the `n` columns and `n` rows of the
 ///   fine grid, checked exactly on the f32 values.
-/// - The shared shuffle keeps neighbouring points apart (a larger minimum
-///   distance and lower discrepancy than [`MultiJittered`](crate::MultiJittered))
-///   and makes sample `index` computable in O(1) from two permutations.
+/// - The shared shuffle keeps neighbouring points apart: the mean minimum
+///   distance is about twice [`MultiJittered`](crate::MultiJittered)'s (at
+///   n = 64 to 256), at about the same L2-star discrepancy. It also makes
+///   sample `index` computable in O(1) from two permutations.
 /// - For a prime `n` the coarse grid is `1 x n`: the set is n-rooks with no
 ///   extra 2D stratification. Kensler instead pads to a larger grid and drops
 ///   samples, which loses the rook property; wellspread keeps it.

@@ -68,7 +68,7 @@ impl Jittered {
     /// # Errors
     ///
     /// [`Error::ZeroSamples`] for `n = 0`; [`Error::TooManySamples`] when the
-    /// grid would have more than 2^24 rows (a prime above 2^24).
+    /// grid would have more than 2^24 rows (a prime above 2^24, or twice one).
     pub fn new(n: u32) -> Result<Self, Error> {
         if n == 0 {
             return Err(Error::ZeroSamples);

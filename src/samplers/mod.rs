@@ -2,11 +2,15 @@
 //! one by name at run time (tools, configuration files, command lines).
 
 mod correlated_multi_jittered;
+mod halton;
+mod hammersley;
 mod jittered;
 mod multi_jittered;
 mod n_rooks;
+mod pmj02;
 mod random;
 mod regular;
+mod sobol;
 
 use core::fmt;
 use core::str::FromStr;
@@ -14,11 +18,15 @@ use core::str::FromStr;
 use glam::Vec2;
 
 pub use correlated_multi_jittered::CorrelatedMultiJittered;
+pub use halton::Halton;
+pub use hammersley::Hammersley;
 pub use jittered::Jittered;
 pub use multi_jittered::MultiJittered;
 pub use n_rooks::{LatinHypercube, NRooks};
+pub use pmj02::Pmj02;
 pub use random::Random;
 pub use regular::Regular;
+pub use sobol::Sobol;
 
 use crate::{Error, Sampler2D};
 
@@ -124,6 +132,10 @@ sampler_kinds! {
     NRooks => "n-rooks",
     MultiJittered => "multi-jittered",
     CorrelatedMultiJittered => "correlated-multi-jittered",
+    Hammersley => "hammersley",
+    Halton => "halton",
+    Sobol => "sobol",
+    Pmj02 => "pmj02",
 }
 
 impl fmt::Display for SamplerKind {

@@ -28,7 +28,7 @@ use crate::sampler::{Sampler2D, check_fill_len};
 ///
 /// `n` at most 2^24 ([`NRooks::MAX_SAMPLES`]): beyond that f32 cannot hold a
 /// point in each of `n` columns. In release builds an index at or above
-/// `len()` returns one of the set's points.
+/// `len()` returns a point in the fine column and row of sample `index % n`.
 ///
 /// # Examples
 ///

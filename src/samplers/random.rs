@@ -1,7 +1,7 @@
 use glam::Vec2;
 
 use crate::Error;
-use crate::hash::{hash_u32, salt, u32_to_unit_f32};
+use crate::hash::{hash_combine, hash_u32, salt, u32_to_unit_f32};
 use crate::sampler::{Sampler2D, check_fill_len};
 
 /// Independent uniform points: the baseline every other sampler must beat.
@@ -61,9 +61,13 @@ impl Random {
         // Hashing the index before mixing in the seed matters: with
         // `index ^ seed`, two seeds that differ only in bits below n would
         // feed the same inputs in another order and so give the same set.
-        // hash_u32 is a bijection, so one pattern's x bits are all distinct;
-        // y hashes x's full 32 bits again with another salt.
-        let bits_x = hash_u32(hash_u32(index) ^ seed ^ salt::JITTER_X);
+        // The index must not be hashed like the pattern either: with
+        // `hash(index) ^ hash(pattern)`, sample i of pattern p is sample p
+        // of pattern i, so patterns 0 and 1 of a 2-point set were the same
+        // set. `hash_combine` adds a constant to the index's hash first.
+        // Both are bijections of the index, so one pattern's x bits are all
+        // distinct; y hashes x's full 32 bits again with another salt.
+        let bits_x = hash_combine(seed ^ salt::JITTER_X, index);
         let bits_y = hash_u32(bits_x ^ salt::JITTER_Y);
         Vec2::new(u32_to_unit_f32(bits_x), u32_to_unit_f32(bits_y))
     }

@@ -61,7 +61,7 @@ impl Regular {
     /// # Errors
     ///
     /// [`Error::ZeroSamples`] for `n = 0`; [`Error::TooManySamples`] when the
-    /// grid would have more than 2^24 rows (a prime above 2^24).
+    /// grid would have more than 2^24 rows (a prime above 2^24, or twice one).
     pub fn new(n: u32) -> Result<Self, Error> {
         if n == 0 {
             return Err(Error::ZeroSamples);
@@ -109,7 +109,7 @@ pub(crate) fn check_grid(sampler: &'static str, columns: u32, rows: u32) -> Resu
             sampler,
             requested: cells,
             max: u32::MAX as u64,
-            reason: "a grid side above 2^24 cells cannot be separated by f32 coordinates (a prime n above 2^24 gives a 1 x n grid)",
+            reason: "its grid would have a side above 2^24 cells, which f32 coordinates cannot tell apart (the most square grid of a prime n is 1 x n); pick an n with a divisor near its square root",
         });
     }
     if cells > u32::MAX as u64 {

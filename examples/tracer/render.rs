@@ -1,0 +1,371 @@
+//! The render core: where each pixel's samples go (the library), what they
+//! see (the scene), and how they become pixels (the reconstruction filter).
+//!
+//! Every pixel value is a fixed sequence of f64 additions in a fixed order,
+//! whichever thread computes it, so the image is bit-identical for any
+//! thread count (the test at the bottom checks 1 against 2 threads).
+
+use std::fmt;
+use std::str::FromStr;
+
+use rayon::prelude::*;
+use wellspread::{AnySampler, Sampler2D, hash::pattern_seed};
+
+use crate::scenes::{Rgb, Scene};
+
+/// A linear-RGB image, row-major, row 0 at the top.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Image {
+    pub width: u32,
+    pub height: u32,
+    pub pixels: Vec<Rgb>,
+}
+
+impl Image {
+    /// Root-mean-square difference over every pixel and channel, in f64.
+    pub fn rmse(&self, other: &Image) -> f64 {
+        assert_eq!((self.width, self.height), (other.width, other.height));
+        let sum: f64 = self
+            .pixels
+            .iter()
+            .zip(&other.pixels)
+            .flat_map(|(a, b)| (0..3).map(move |c| f64::from(a[c]) - f64::from(b[c])))
+            .map(|d| d * d)
+            .sum();
+        (sum / (3 * self.pixels.len()) as f64).sqrt()
+    }
+}
+
+/// The reconstruction filter: how samples are weighted into pixels
+/// (Smith 1995, "A Pixel Is Not A Little Square"). Every filter here is
+/// separable, `w(dx, dy) = f(dx) f(dy)`, with `d` measured in pixels from
+/// the pixel centre.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Filter {
+    /// Each pixel averages its own samples: radius 1/2, the little square.
+    Box,
+    /// Gaussian with sigma 1/2 pixel, cut at radius 3 sigma = 1.5 and
+    /// shifted down by its value there so it reaches zero continuously.
+    Gaussian,
+    /// Mitchell & Netravali 1988 with B = C = 1/3, radius 2: their
+    /// recommended trade between blur and ringing.
+    Mitchell,
+}
+
+impl Filter {
+    pub const ALL: [Filter; 3] = [Filter::Box, Filter::Gaussian, Filter::Mitchell];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Filter::Box => "box",
+            Filter::Gaussian => "gaussian",
+            Filter::Mitchell => "mitchell",
+        }
+    }
+
+    /// Half-width of the support, in pixels.
+    pub fn radius(self) -> f64 {
+        match self {
+            Filter::Box => 0.5,
+            Filter::Gaussian => 1.5,
+            Filter::Mitchell => 2.0,
+        }
+    }
+
+    /// Offsets from the pixel centre where the 1D profile is not smooth
+    /// (its ends and, for Mitchell, the joins of its cubic pieces), in
+    /// increasing order: the quadrature reference integrates piece by piece.
+    pub fn breaks(self) -> &'static [f64] {
+        match self {
+            Filter::Box => &[-0.5, 0.5],
+            Filter::Gaussian => &[-1.5, 1.5],
+            Filter::Mitchell => &[-2.0, -1.0, 0.0, 1.0, 2.0],
+        }
+    }
+
+    /// The 1D profile at offset `d` pixels; zero outside the radius.
+    #[inline]
+    pub fn weight_1d(self, d: f64) -> f64 {
+        let d = d.abs();
+        match self {
+            Filter::Box => f64::from(u8::from(d < 0.5)),
+            Filter::Gaussian => {
+                const SIGMA: f64 = 0.5;
+                let g = |t: f64| (-t * t / (2.0 * SIGMA * SIGMA)).exp();
+                (g(d) - g(1.5)).max(0.0)
+            }
+            Filter::Mitchell => {
+                const B: f64 = 1.0 / 3.0;
+                const C: f64 = 1.0 / 3.0;
+                let value = if d < 1.0 {
+                    (12.0 - 9.0 * B - 6.0 * C) * d * d * d
+                        + (-18.0 + 12.0 * B + 6.0 * C) * d * d
+                        + (6.0 - 2.0 * B)
+                } else if d < 2.0 {
+                    (-B - 6.0 * C) * d * d * d
+                        + (6.0 * B + 30.0 * C) * d * d
+                        + (-12.0 * B - 48.0 * C) * d
+                        + (8.0 * B + 24.0 * C)
+                } else {
+                    0.0
+                };
+                value / 6.0
+            }
+        }
+    }
+}
+
+impl fmt::Display for Filter {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for Filter {
+    type Err = String;
+
+    fn from_str(name: &str) -> Result<Self, Self::Err> {
+        Filter::ALL
+            .into_iter()
+            .find(|filter| filter.name() == name)
+            .ok_or_else(|| {
+                format!("unknown filter {name:?}; expected one of: box gaussian mitchell")
+            })
+    }
+}
+
+/// Where a render's sample patterns come from.
+#[derive(Clone, Copy, Debug)]
+pub struct Patterns {
+    /// The `frame` argument of `pattern_seed`: `--seed`.
+    pub seed: u32,
+    /// The dimension pair. Images use 0 (film position); the Monte Carlo
+    /// references use 1, a pattern no compared image uses, so a reference
+    /// is never correlated with what it measures.
+    pub dimension: u32,
+}
+
+/// Renders `scene` on its `width x height` film: pixel `(px, py)` takes
+/// samples `0..sampler.len()` of pattern
+/// `pattern_seed(px, py, patterns.seed, patterns.dimension)` as offsets
+/// inside the pixel, and `filter` turns them into pixel values.
+///
+/// Runs on the current rayon pool (`ThreadPool::install` picks another).
+pub fn render(
+    scene: &Scene,
+    width: u32,
+    height: u32,
+    sampler: &AnySampler,
+    patterns: Patterns,
+    filter: Filter,
+) -> Image {
+    let pixels = match filter {
+        Filter::Box => render_box(scene, width, height, sampler, patterns),
+        _ => render_filtered(scene, width, height, sampler, patterns, filter),
+    };
+    Image {
+        width,
+        height,
+        pixels,
+    }
+}
+
+/// The sample positions of pixel `(px, py)` in film coordinates, one at a
+/// time: the library's O(1) random access means no per-pixel buffer.
+#[inline]
+fn pixel_samples(
+    sampler: &AnySampler,
+    patterns: Patterns,
+    px: u32,
+    py: u32,
+) -> impl Iterator<Item = (f64, f64)> + '_ {
+    let pattern = pattern_seed(px, py, patterns.seed, patterns.dimension);
+    (0..sampler.len()).map(move |index| {
+        let offset = sampler.sample(index, pattern);
+        (
+            f64::from(px) + f64::from(offset.x),
+            f64::from(py) + f64::from(offset.y),
+        )
+    })
+}
+
+/// Box filter: every pixel is the plain mean of its own samples, so rows
+/// are independent and each is one rayon task.
+fn render_box(
+    scene: &Scene,
+    width: u32,
+    height: u32,
+    sampler: &AnySampler,
+    patterns: Patterns,
+) -> Vec<Rgb> {
+    let mut pixels = vec![[0.0; 3]; width as usize * height as usize];
+    pixels
+        .par_chunks_mut(width as usize)
+        .enumerate()
+        .for_each(|(py, row)| {
+            for (pixel, px) in row.iter_mut().zip(0..width) {
+                *pixel = box_pixel(scene, sampler, patterns, px, py as u32);
+            }
+        });
+    pixels
+}
+
+/// One box-filtered pixel: the mean radiance of its samples, summed in f64.
+pub fn box_pixel(scene: &Scene, sampler: &AnySampler, patterns: Patterns, px: u32, py: u32) -> Rgb {
+    let mut sum = [0.0f64; 3];
+    for (x, y) in pixel_samples(sampler, patterns, px, py) {
+        let radiance = scene.radiance(x, y);
+        for c in 0..3 {
+            sum[c] += f64::from(radiance[c]);
+        }
+    }
+    let inverse_count = 1.0 / f64::from(sampler.len());
+    sum.map(|s| (s * inverse_count) as f32)
+}
+
+/// Output rows per rayon task for the wide filters. Each band also shades
+/// the `margin` rows above and below it that its filter reaches, so taller
+/// bands waste less; 16 rows still give 16 tasks at 256 pixels high.
+const BAND_ROWS: u32 = 16;
+
+/// Wide filters: a pixel is `sum(w L) / sum(w)` over every sample within
+/// the filter radius of its centre, from any pixel. The film is cut into
+/// horizontal bands; a band shades the sample rows its pixels can see
+/// (its own and `margin` more on each side) and splats each sample into
+/// the band's pixels in a fixed order. Rows near a band edge are shaded
+/// twice, by both bands, which is the price of bands never sharing
+/// writable state.
+fn render_filtered(
+    scene: &Scene,
+    width: u32,
+    height: u32,
+    sampler: &AnySampler,
+    patterns: Patterns,
+    filter: Filter,
+) -> Vec<Rgb> {
+    let radius = filter.radius();
+    // A sample at y in [sy, sy + 1) reaches pixel rows whose centre
+    // py + 1/2 is within `radius`, which is at most `margin` rows away.
+    let margin = (radius - 0.5).ceil() as i64;
+    let mut pixels = vec![[0.0; 3]; width as usize * height as usize];
+    pixels
+        .par_chunks_mut((BAND_ROWS * width) as usize)
+        .enumerate()
+        .for_each(|(band_index, band)| {
+            let band_rows = (band.len() / width as usize) as i64;
+            let band_y0 = band_index as i64 * i64::from(BAND_ROWS);
+            // Running sums of w * L (three channels) and of w, per pixel.
+            let mut sums = vec![[0.0f64; 4]; band.len()];
+            let first_row = (band_y0 - margin).max(0);
+            let last_row = (band_y0 + band_rows - 1 + margin).min(i64::from(height) - 1);
+            for sy in first_row..=last_row {
+                for sx in 0..width {
+                    for (x, y) in pixel_samples(sampler, patterns, sx, sy as u32) {
+                        let radiance = scene.radiance(x, y).map(f64::from);
+                        // Pixels whose centre (p + 1/2) is within the radius.
+                        let x_lo = ((x - 0.5 - radius).floor() as i64 + 1).max(0);
+                        let x_hi = ((x - 0.5 + radius).ceil() as i64 - 1).min(i64::from(width) - 1);
+                        let y_lo = ((y - 0.5 - radius).floor() as i64 + 1).max(band_y0);
+                        let y_hi =
+                            ((y - 0.5 + radius).ceil() as i64 - 1).min(band_y0 + band_rows - 1);
+                        for py in y_lo..=y_hi {
+                            let wy = filter.weight_1d(y - (py as f64 + 0.5));
+                            if wy == 0.0 {
+                                continue;
+                            }
+                            let row = ((py - band_y0) * i64::from(width)) as usize;
+                            for px in x_lo..=x_hi {
+                                let w = wy * filter.weight_1d(x - (px as f64 + 0.5));
+                                let sum = &mut sums[row + px as usize];
+                                sum[0] += w * radiance[0];
+                                sum[1] += w * radiance[1];
+                                sum[2] += w * radiance[2];
+                                sum[3] += w;
+                            }
+                        }
+                    }
+                }
+            }
+            for (pixel, sum) in band.iter_mut().zip(&sums) {
+                // Mitchell's negative lobes can, at very low counts, leave a
+                // pixel with no net weight; black is the honest answer.
+                *pixel = if sum[3].abs() > 1e-12 {
+                    [sum[0], sum[1], sum[2]].map(|s| (s / sum[3]) as f32)
+                } else {
+                    [0.0; 3]
+                };
+            }
+        });
+    pixels
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scenes::SceneKind;
+    use wellspread::SamplerKind;
+
+    fn bits(image: &Image) -> Vec<u32> {
+        image.pixels.iter().flatten().map(|v| v.to_bits()).collect()
+    }
+
+    #[test]
+    fn images_are_bit_identical_for_one_and_two_threads() {
+        let pool = |threads| {
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap()
+        };
+        let (one, two) = (pool(1), pool(2));
+        let patterns = Patterns {
+            seed: 7,
+            dimension: 0,
+        };
+        // 40 rows make three bands, so the wide filters' band seams are
+        // exercised too.
+        let (width, height) = (24, 40);
+        for scene_kind in SceneKind::ALL {
+            let scene = scene_kind.build(width, height);
+            for filter in Filter::ALL {
+                let sampler = SamplerKind::CorrelatedMultiJittered.build(16).unwrap();
+                let a = one.install(|| render(&scene, width, height, &sampler, patterns, filter));
+                let b = two.install(|| render(&scene, width, height, &sampler, patterns, filter));
+                assert_eq!(bits(&a), bits(&b), "{scene_kind} {filter}");
+            }
+        }
+    }
+
+    #[test]
+    fn filters_are_normalised_and_vanish_at_their_radius() {
+        for filter in Filter::ALL {
+            let r = filter.radius();
+            assert_eq!(filter.weight_1d(r), 0.0, "{filter}");
+            // Midpoint rule over the support: each profile integrates to a
+            // positive constant (1 for box and Mitchell).
+            let n = 100_000;
+            let h = 2.0 * r / f64::from(n);
+            let integral: f64 = (0..n)
+                .map(|i| filter.weight_1d(-r + (f64::from(i) + 0.5) * h) * h)
+                .sum();
+            if filter != Filter::Gaussian {
+                assert!((integral - 1.0).abs() < 1e-6, "{filter}: {integral}");
+            } else {
+                assert!(integral > 0.5, "{filter}: {integral}");
+            }
+        }
+    }
+
+    #[test]
+    fn box_render_of_a_constant_region_is_exact() {
+        // Inside the 64 x 64 polygon, every sample sees yellow.
+        let scene = SceneKind::Polygon.build(64, 64);
+        let sampler = SamplerKind::Random.build(4).unwrap();
+        let patterns = Patterns {
+            seed: 0,
+            dimension: 0,
+        };
+        let image = render(&scene, 64, 64, &sampler, patterns, Filter::Box);
+        assert_eq!(image.pixels[32 * 64 + 20], crate::scenes::Polygon::YELLOW);
+    }
+}

@@ -1,0 +1,119 @@
+use glam::Vec2;
+
+use crate::Error;
+use crate::hash::{
+    MAX_STRATA, hash_u32, owen_scramble_reversed, rand_u32, salt, stratum_to_unit_f32,
+    u32_to_unit_f32,
+};
+use crate::sampler::Sampler2D;
+
+/// The Hammersley set `(i / n, phi_2(i))`, randomised: scrambled.
+///
+/// Point `index` lies in column `index` of `n` (x jittered uniformly inside
+/// it, in fixed point by [`stratum_to_unit_f32`]), and its y is the base-2
+/// radical inverse of `index`, Owen-scrambled with Burley's hash
+/// ([`owen_scramble_reversed`]). The randomisation keeps the structure
+/// (columns and y's elementary intervals) and makes each pattern an
+/// independent, unbiased set. The unscrambled textbook set is the case of
+/// no jitter and no scramble; it is not offered because its points sit on
+/// the lower-left corners of their boxes and repeat in every pixel.
+///
+/// # Properties
+///
+/// - Latin in x: one point per column of `n`, for every `n`.
+/// - For `n = 2^m` (`m <= 24`) a (0,m,2)-net: each of the `2^m` boxes
+///   `2^-a x 2^-(m-a)` of every shape holds exactly one point (the top `a`
+///   bits of the index pick the column band, its low `m - a` bits the row
+///   band, and the scramble permutes bands as whole blocks). So it is also
+///   stratified on `2^k x 2^k` for `n = 4^k`, and Latin in y.
+/// - For other `n`, the y values of the first `2^j <= n` points are one per
+///   row of `2^j`; the set is not progressive (a prefix of it is not a good
+///   set: its x values crowd the left of the square).
+///
+/// # Cost
+///
+/// One pattern hash (once per [`fill`](Sampler2D::fill)), one [`rand_u32`]
+/// and one Owen-scramble hash, one bit reversal and one fixed-point stratum
+/// conversion per sample.
+///
+/// # Limits
+///
+/// `n` at most 2^24 ([`Hammersley::MAX_SAMPLES`]): the columns must be
+/// distinct f32 strata. In release builds an index at or above `len()`
+/// returns a point in the last column.
+///
+/// # Examples
+///
+/// ```
+/// use wellspread::{Hammersley, Sampler2D};
+/// let hammersley = Hammersley::new(64)?;
+/// // n = 64 = 8 x 8: stratified on the 8 x 8 grid, Latin on 64 x 64.
+/// let mut cells = [0; 64];
+/// let mut rows = [0; 64];
+/// for i in 0..64 {
+///     let p = hammersley.sample(i, 3);
+///     cells[(p.y * 8.0) as usize * 8 + (p.x * 8.0) as usize] += 1;
+///     rows[(p.y * 64.0) as usize] += 1;
+/// }
+/// assert_eq!(cells, [1; 64]);
+/// assert_eq!(rows, [1; 64]);
+/// # Ok::<(), wellspread::Error>(())
+/// ```
+///
+/// # References
+///
+/// - Hammersley 1960, "Monte Carlo methods for solving multivariable
+///   problems", Ann. N.Y. Acad. Sci. 86.
+/// - Owen 1997, "Monte Carlo variance of scrambled net quadrature", SIAM J.
+///   Numer. Anal. 34(5).
+/// - Burley 2020, "Practical Hash-based Owen Scrambling", JCGT 9(4).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Hammersley {
+    n: u32,
+}
+
+impl Hammersley {
+    /// The largest `n` accepted: 2^24, the number of distinct f32 strata.
+    pub const MAX_SAMPLES: u32 = MAX_STRATA;
+
+    /// A scrambled Hammersley set of `n` points.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::ZeroSamples`] for `n = 0`; [`Error::TooManySamples`] above
+    /// [`Hammersley::MAX_SAMPLES`].
+    pub fn new(n: u32) -> Result<Self, Error> {
+        if n == 0 {
+            return Err(Error::ZeroSamples);
+        }
+        if n > Self::MAX_SAMPLES {
+            return Err(Error::TooManySamples {
+                sampler: "hammersley",
+                requested: n as u64,
+                max: Self::MAX_SAMPLES as u64,
+                reason: "one point per column of n needs n distinct f32 columns in [0, 1), and f32 has 2^24 at equal spacing",
+            });
+        }
+        Ok(Self { n })
+    }
+}
+
+impl Sampler2D for Hammersley {
+    #[inline]
+    fn len(&self) -> u32 {
+        self.n
+    }
+
+    #[inline]
+    fn sample(&self, index: u32, pattern: u32) -> Vec2 {
+        debug_assert!(index < self.n, "index {index} out of range 0..{}", self.n);
+        let seed = hash_u32(pattern);
+        // Clamp so a release build with a bad index stays in the last column.
+        let column = if index < self.n { index } else { self.n - 1 };
+        Vec2::new(
+            stratum_to_unit_f32(column, self.n, rand_u32(index, seed ^ salt::JITTER_X)),
+            // In reversed bit order the radical inverse of `index` is `index`.
+            u32_to_unit_f32(owen_scramble_reversed(index, seed ^ salt::JITTER_Y).reverse_bits()),
+        )
+    }
+}

@@ -1,0 +1,355 @@
+use glam::Vec2;
+
+use crate::Error;
+use crate::hash::{hash_u32, owen_scramble, owen_scramble_reversed, salt, u32_to_unit_f32};
+use crate::sampler::{Sampler2D, check_fill_len};
+
+/// The first two dimensions of the Sobol sequence, Owen-scrambled with
+/// Burley's hash and shuffled: a randomised base-2 (0,2)-sequence.
+///
+/// Sample `index` is computed as follows (Burley 2020):
+///
+/// 1. The index is shuffled, `s = owen_scramble(index, seed_index)`
+///    ([`owen_scramble`]). Aligned blocks of `2^m` indices map onto aligned
+///    blocks, so every power-of-two prefix is still an aligned block of the
+///    sequence, while different patterns visit the blocks, and the points
+///    inside them, in unrelated orders.
+/// 2. Sobol dimension 0 of `s` is its radical inverse; dimension 1 is the
+///    Pascal matrix mod 2 applied to the digits of `s`, computed without
+///    tables by five xor-shift steps (see `pascal_reversed` in the source).
+/// 3. Each coordinate is Owen-scrambled with its own seed
+///    ([`owen_scramble_reversed`]) and truncated to 24 bits by
+///    [`u32_to_unit_f32`].
+///
+/// All three seeds are hashes of `pattern`. For further dimension pairs
+/// (lens, time, light) pass a pattern with the pair's number hashed in,
+/// `pattern_seed(x, y, frame, dimension)`
+/// ([`pattern_seed`](crate::hash::pattern_seed)): the independent index
+/// shuffle is what decorrelates pairs (Burley's "padding"), since two
+/// pairs then see unrelated points of the sequence at the same `index`.
+///
+/// # Properties
+///
+/// - A sequence: `sample` accepts every `index` in `0..2^32`, whatever
+///   `len()` is. `len()` is only the set size that
+///   [`fill`](Sampler2D::fill) and the tools use.
+/// - Every power-of-two prefix `0..2^m` (`m <= 24`), and every aligned block
+///   `k 2^m..(k + 1) 2^m`, is a (0,m,2)-net: each of the `2^m` boxes
+///   `2^-a x 2^-(m-a)` of every shape `a = 0..=m` holds exactly one point,
+///   checked exactly on the f32 values. So prefixes of length `4^k` are
+///   stratified on `2^k x 2^k` and all are Latin (one point per row and
+///   column of `2^m`).
+/// - Each point is uniformly distributed over `[0, 1)^2` (Owen scrambling),
+///   so estimates are unbiased; on smooth integrands the error at powers of
+///   two falls like `n^-1.5` (Owen 1997).
+///
+/// # Cost
+///
+/// Four [`hash_u32`] of the pattern (once per [`fill`](Sampler2D::fill)),
+/// three Owen-scramble hashes of four multiply-xor steps, four bit
+/// reversals and five xor-shift steps per sample: no loop, no table, no
+/// division, about 160 x86-64 instructions for `sample`. `fill` runs eight
+/// indices at a time in SIMD lanes where the target allows. About 2.5 to 3 times faster than two
+/// calls to `sobol_burley::sample` (one per dimension), which shuffle the
+/// index and hash the seed once per dimension and loop over the set bits of
+/// a 16-bit index through a direction-number table (and so accept indices
+/// below 2^16 only).
+///
+/// # Limits
+///
+/// Any `n` from 1 to `u32::MAX` for the set size. Coordinates are multiples
+/// of `2^-24`, so nets are exact for prefixes up to `2^24` points; beyond
+/// that the boxes are narrower than the f32 spacing below 1.0 and two points
+/// can share a coordinate. No index wraps: the `2^32` indices give `2^32`
+/// distinct points in 32-bit fixed point, before the truncation to 24 bits.
+///
+/// # Examples
+///
+/// ```
+/// use wellspread::{Sobol, Sampler2D};
+/// let sobol = Sobol::new(16)?;
+/// let points: Vec<_> = (0..16).map(|i| sobol.sample(i, 42)).collect();
+/// // A (0,4,2)-net: one point in each box of every shape 2^-a x 2^-(4-a).
+/// for a in 0..=4 {
+///     let mut seen = [false; 16];
+///     for p in &points {
+///         let (col, row) = ((p.x * (1 << a) as f32) as usize, (p.y * (1 << (4 - a)) as f32) as usize);
+///         seen[col << (4 - a) | row] = true;
+///     }
+///     assert!(seen.iter().all(|&s| s));
+/// }
+/// // A sequence: any index is valid.
+/// assert!(sobol.sample(u32::MAX, 42).x < 1.0);
+/// # Ok::<(), wellspread::Error>(())
+/// ```
+///
+/// Padding: one pattern per pixel, frame and dimension pair.
+///
+/// ```
+/// use wellspread::{Sobol, Sampler2D, hash::pattern_seed};
+/// let sobol = Sobol::new(64)?;
+/// let (px, py, frame) = (120, 45, 0);
+/// for i in 0..sobol.len() {
+///     let film = sobol.sample(i, pattern_seed(px, py, frame, 0));
+///     let lens = sobol.sample(i, pattern_seed(px, py, frame, 1));
+///     let time = sobol.sample(i, pattern_seed(px, py, frame, 2)).x;
+///     assert!(film.max_element() < 1.0 && lens.max_element() < 1.0 && time < 1.0);
+/// }
+/// # Ok::<(), wellspread::Error>(())
+/// ```
+///
+/// # References
+///
+/// - Sobol 1967, "On the distribution of points in a cube and the
+///   approximate evaluation of integrals", USSR Comput. Math. Math. Phys. 7(4).
+/// - Owen 1997, "Monte Carlo variance of scrambled net quadrature", SIAM J.
+///   Numer. Anal. 34(5).
+/// - Laine & Karras 2011, "Stratified Sampling for Stochastic Transparency",
+///   EGSR.
+/// - Burley 2020, "Practical Hash-based Owen Scrambling", JCGT 9(4): the
+///   scramble, the index shuffle and padding.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Sobol {
+    n: u32,
+}
+
+impl Sobol {
+    /// An Owen-scrambled Sobol sequence, with `n` as the set size for
+    /// [`fill`](Sampler2D::fill) and the tools.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::ZeroSamples`] for `n = 0`.
+    pub fn new(n: u32) -> Result<Self, Error> {
+        if n == 0 {
+            return Err(Error::ZeroSamples);
+        }
+        Ok(Self { n })
+    }
+}
+
+/// Three independent seeds for a shuffled, Owen-scrambled 2D sequence: one
+/// for the index shuffle and one per coordinate.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct OwenSeeds {
+    pub(crate) index: u32,
+    pub(crate) x: u32,
+    pub(crate) y: u32,
+}
+
+impl OwenSeeds {
+    #[inline]
+    pub(crate) const fn new(pattern: u32) -> Self {
+        // Hashing each salted seed again (rather than only xoring salts in)
+        // keeps the three scrambles unrelated: Owen scrambles add the seed,
+        // and seeds that differ by a fixed xor would differ predictably.
+        let seed = hash_u32(pattern);
+        Self {
+            index: hash_u32(seed ^ salt::ORDER),
+            x: hash_u32(seed ^ salt::JITTER_X),
+            y: hash_u32(seed ^ salt::JITTER_Y),
+        }
+    }
+}
+
+/// Finishes a point of a shuffled digital (0,2)-sequence: Owen-scrambles
+/// the two coordinates, given as digits in reversed bit order, and returns
+/// them in natural order (0.32 fixed point).
+#[inline(always)]
+pub(crate) const fn scrambled_bits(
+    x_reversed: u32,
+    y_reversed: u32,
+    seeds: OwenSeeds,
+) -> (u32, u32) {
+    (
+        owen_scramble_reversed(x_reversed, seeds.x).reverse_bits(),
+        owen_scramble_reversed(y_reversed, seeds.y).reverse_bits(),
+    )
+}
+
+/// The point with coordinates `bits / 2^32`, truncated to 24 bits.
+#[inline(always)]
+pub(crate) const fn bits_to_point((x, y): (u32, u32)) -> Vec2 {
+    Vec2::new(u32_to_unit_f32(x), u32_to_unit_f32(y))
+}
+
+/// Points per batch in [`fill_in_lanes`].
+const LANES: usize = 8;
+
+/// `fill` for sequences whose point is `bits_to_point(point_bits(index,
+/// seeds))`, in batches of [`LANES`] independent indices. Every step of a
+/// point is a 32-bit integer operation on its own lane (multiplies, shifts,
+/// masks, bit reversals), so the compiler can run a batch in SIMD
+/// registers; on x86-64 with only SSE2 this is about a third faster than
+/// one point at a time. The values are exactly those of `sample`, which
+/// calls the same `point_bits`.
+#[inline(always)]
+pub(crate) fn fill_in_lanes(
+    out: &mut [Vec2],
+    seeds: OwenSeeds,
+    point_bits: impl Fn(u32, OwenSeeds) -> (u32, u32),
+) {
+    // Callers check `out.len() <= n <= u32::MAX`, so indices fit in u32.
+    let mut chunks = out.chunks_exact_mut(LANES);
+    let mut base = 0u32;
+    for chunk in &mut chunks {
+        let mut x = [0u32; LANES];
+        let mut y = [0u32; LANES];
+        for (lane, (x, y)) in (0..).zip(x.iter_mut().zip(y.iter_mut())) {
+            (*x, *y) = point_bits(base + lane, seeds);
+        }
+        for ((point, &x), &y) in chunk.iter_mut().zip(&x).zip(&y) {
+            *point = bits_to_point((x, y));
+        }
+        base += LANES as u32;
+    }
+    for (index, point) in (base..).zip(chunks.into_remainder()) {
+        *point = bits_to_point(point_bits(index, seeds));
+    }
+}
+
+/// Sobol dimension 1 of `index`, in reversed bit order (bit `k` is the digit
+/// of weight `2^-(k+1)`).
+///
+/// Its generator matrix is the Pascal matrix mod 2: digit `k` is the xor of
+/// the index bits `j` with `binomial(j, k)` odd, which by Lucas' theorem are
+/// the `j` whose set bits include those of `k`. That xor over supersets is
+/// computed for all 32 digits at once in five butterfly steps, one per bit of
+/// `k`: step `b` folds bit `k + 2^b` into bit `k` wherever bit `b` of `k` is
+/// clear, which is what each mask selects (`0x5555_5555`: positions with bit
+/// 0 clear; `0x3333_3333`: bit 1 clear; and so on). Equivalently, its
+/// direction numbers are those of the primitive polynomial `x + 1`,
+/// `v_0 = 2^31` and `v_j = v_(j-1) ^ (v_(j-1) >> 1)` (Joe & Kuo's dimension
+/// 2), tested below.
+#[inline(always)]
+pub(crate) const fn pascal_reversed(index: u32) -> u32 {
+    let mut y = index;
+    y ^= (y >> 1) & 0x5555_5555;
+    y ^= (y >> 2) & 0x3333_3333;
+    y ^= (y >> 4) & 0x0f0f_0f0f;
+    y ^= (y >> 8) & 0x00ff_00ff;
+    y ^= y >> 16;
+    y
+}
+
+/// Sample `index` of the sequence, in natural-order 0.32 fixed point.
+#[inline(always)]
+fn sobol_bits(index: u32, seeds: OwenSeeds) -> (u32, u32) {
+    let s = owen_scramble(index, seeds.index);
+    // Dimension 0's generator is the identity: its reversed digits are `s`.
+    scrambled_bits(s, pascal_reversed(s), seeds)
+}
+
+impl Sampler2D for Sobol {
+    #[inline]
+    fn len(&self) -> u32 {
+        self.n
+    }
+
+    /// Sample `index` of pattern `pattern`; every `index` below `2^32` is
+    /// valid, including those at or above [`len`](Sampler2D::len).
+    #[inline]
+    fn sample(&self, index: u32, pattern: u32) -> Vec2 {
+        bits_to_point(sobol_bits(index, OwenSeeds::new(pattern)))
+    }
+
+    #[inline]
+    fn fill(&self, pattern: u32, out: &mut [Vec2]) {
+        check_fill_len(out.len(), self.n);
+        fill_in_lanes(out, OwenSeeds::new(pattern), sobol_bits);
+    }
+}
+
+#[cfg(test)]
+pub(crate) mod tests {
+    use super::*;
+
+    /// `true` if the digital sequence whose generator matrices have columns
+    /// `x_column(j)` and `y_column(j)` (reversed bit order: bit `k` is digit
+    /// `k`) is a (0,2)-sequence in base 2 for every `m <= 32`: for each
+    /// shape `d0 + d1 = m`, the first `d0` rows of one matrix and the first
+    /// `d1` of the other, cut to `m` columns, are linearly independent
+    /// (Niederreiter 1992, "Random Number Generation and Quasi-Monte Carlo
+    /// Methods", ch. 4). Owen scrambling keeps the property.
+    pub(crate) fn is_02_sequence(
+        x_column: impl Fn(u32) -> u32,
+        y_column: impl Fn(u32) -> u32,
+    ) -> bool {
+        let row = |column: &dyn Fn(u32) -> u32, k: u32, m: u32| -> u64 {
+            (0..m).fold(0, |r, j| r | ((column(j) >> k & 1) as u64) << j)
+        };
+        for m in 1..=32 {
+            for d0 in 0..=m {
+                let mut basis: std::vec::Vec<u64> = std::vec::Vec::new();
+                let rows = (0..d0)
+                    .map(|k| row(&x_column, k, m))
+                    .chain((0..m - d0).map(|k| row(&y_column, k, m)));
+                for mut v in rows {
+                    for &b in &basis {
+                        v = v.min(v ^ b);
+                    }
+                    if v == 0 {
+                        return false;
+                    }
+                    basis.push(v);
+                    basis.sort_unstable_by(|a, b| b.cmp(a));
+                }
+            }
+        }
+        true
+    }
+
+    #[test]
+    fn sobol_is_a_02_sequence_up_to_2_to_the_32() {
+        assert!(is_02_sequence(|j| 1 << j, |j| pascal_reversed(1 << j)));
+        // And the check has teeth: two equal matrices are not.
+        assert!(!is_02_sequence(|j| 1 << j, |j| 1 << j));
+    }
+
+    #[test]
+    fn fill_in_lanes_covers_every_length() {
+        let sobol = Sobol::new(100).unwrap();
+        for len in [0, 1, 7, 8, 9, 16, 17, 100] {
+            let mut out = std::vec![Vec2::ZERO; len];
+            sobol.fill(3, &mut out);
+            for (i, p) in (0..).zip(&out) {
+                assert_eq!(*p, sobol.sample(i, 3), "len {len} index {i}");
+            }
+        }
+    }
+
+    #[test]
+    fn pascal_matches_the_direction_numbers_of_x_plus_1() {
+        let mut v = 1u32 << 31;
+        for j in 0..32 {
+            assert_eq!(pascal_reversed(1 << j).reverse_bits(), v, "column {j}");
+            v ^= v >> 1;
+        }
+        // Linear: the xor of columns.
+        assert_eq!(
+            pascal_reversed(0b1011),
+            pascal_reversed(0b1000) ^ pascal_reversed(0b10) ^ pascal_reversed(1)
+        );
+    }
+
+    #[test]
+    fn unscrambled_start_is_the_sobol_sequence() {
+        // The first eight points of Sobol dimensions 0 and 1 in index order,
+        // in 1/8ths (Sobol 1967; Joe & Kuo's tables give the same).
+        let expect = [
+            (0, 0),
+            (4, 4),
+            (2, 6),
+            (6, 2),
+            (1, 5),
+            (5, 1),
+            (3, 3),
+            (7, 7),
+        ];
+        for (i, &(x, y)) in expect.iter().enumerate() {
+            let i = i as u32;
+            assert_eq!(i.reverse_bits() >> 29, x, "x of {i}");
+            assert_eq!(pascal_reversed(i).reverse_bits() >> 29, y, "y of {i}");
+        }
+    }
+}
