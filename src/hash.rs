@@ -293,6 +293,43 @@ impl Length {
         self.divisor.div_rem(x)
     }
 
+    /// Whether the length is a power of two: then every grid length of a
+    /// sampler of `n = len` is one too, and `fill` runs the `POW2 = true`
+    /// instances of the methods below.
+    #[inline(always)]
+    pub(crate) const fn is_power_of_two(self) -> bool {
+        self.divisor.log2().is_some()
+    }
+
+    /// [`div_rem`](Self::div_rem), specialised at compile time: with `POW2`
+    /// the caller guarantees a power of two (checked in debug builds), so
+    /// the loop that calls it holds a shift and a mask and no branch.
+    #[inline(always)]
+    pub(crate) const fn div_rem_in<const POW2: bool>(self, x: u32) -> (u32, u32) {
+        if POW2 {
+            debug_assert!(self.is_power_of_two());
+            (x >> self.divisor.shift, x & (self.get() - 1))
+        } else {
+            self.div_rem(x)
+        }
+    }
+
+    /// [`stratum_to_unit_f32`](Self::stratum_to_unit_f32), specialised at
+    /// compile time like [`div_rem_in`](Self::div_rem_in).
+    #[inline(always)]
+    pub(crate) const fn stratum_to_unit_f32_in<const POW2: bool>(
+        self,
+        stratum: u32,
+        bits: u32,
+    ) -> f32 {
+        if POW2 {
+            debug_assert!(self.is_power_of_two() && self.get() <= MAX_STRATA);
+            power_of_two_stratum_to_unit_f32(stratum, self.divisor.shift, bits)
+        } else {
+            self.stratum_to_unit_f32(stratum, bits)
+        }
+    }
+
     /// Permutation `pattern` of `[0, len)`: [`permute`]`(_, len, pattern)`
     /// with the per-pattern work (the rotation `pattern % len`) done here,
     /// once.
@@ -312,13 +349,7 @@ impl Length {
         debug_assert!(self.get() <= MAX_STRATA && stratum < self.get());
         if let Some(k) = self.divisor.log2() {
             if k <= UNIT_BITS {
-                // 2^k strata of width 2^(24 - k): `start` and `end` below
-                // are exact shifts, and `(width * bits) >> 32` is `bits >>
-                // (8 + k)`; the sum stays below 2^24, so no clamp either.
-                // (Shifted as u64: at k = 24 the shift is 32.)
-                let t =
-                    (stratum << (UNIT_BITS - k)) + ((bits as u64) >> (32 - UNIT_BITS + k)) as u32;
-                return t as f32 * (1.0 / MAX_STRATA as f32);
+                return power_of_two_stratum_to_unit_f32(stratum, k, bits);
             }
         }
         let start = self.divisor.div_ceil((stratum as u64) << UNIT_BITS);
@@ -334,6 +365,17 @@ impl Length {
         };
         t as f32 * (1.0 / MAX_STRATA as f32)
     }
+}
+
+/// [`stratum_to_unit_f32`]`(stratum, 2^k, bits)` for `k <= 24`, by shifts:
+/// with `2^k` strata of width `2^(24 - k)`, `start` and `end` are exact
+/// shifts and `(width * bits) >> 32` is `bits >> (8 + k)`; the sum stays below
+/// 2^24, so there is no clamp either.
+#[inline(always)]
+const fn power_of_two_stratum_to_unit_f32(stratum: u32, k: u32, bits: u32) -> f32 {
+    // (Shifted as u64: at k = 24 the shift is 32.)
+    let t = (stratum << (UNIT_BITS - k)) + ((bits as u64) >> (32 - UNIT_BITS + k)) as u32;
+    t as f32 * (1.0 / MAX_STRATA as f32)
 }
 
 /// One permutation of `[0, len)`, ready to apply: [`permute`] with its

@@ -101,9 +101,10 @@ impl CorrelatedMultiJittered {
 impl CorrelatedMultiJittered {
     /// Sample `index` given the pattern's hash `seed`, its order permutation
     /// and the shared shuffles (`sub_column(row)`, `sub_row(column)`): the
-    /// one formula `sample` and `fill` share.
+    /// one formula `sample` and `fill` share. `POW2` promises a power-of-two
+    /// `n` (so grid sides too), for a branch-free `fill` loop.
     #[inline(always)]
-    fn point(
+    fn point<const POW2: bool>(
         &self,
         seed: u32,
         order: &Permutation,
@@ -112,16 +113,16 @@ impl CorrelatedMultiJittered {
         index: u32,
     ) -> Vec2 {
         let cell = order.apply(index);
-        let (row, column) = self.columns.div_rem(cell);
+        let (row, column) = self.columns.div_rem_in::<POW2>(cell);
         // One shuffle for all columns, one for all rows: Kensler's
         // correlation. Fine column = column * rows + shuffled row.
         let (columns, rows) = (self.columns.get(), self.rows.get());
         Vec2::new(
-            self.n.stratum_to_unit_f32(
+            self.n.stratum_to_unit_f32_in::<POW2>(
                 column * rows + sub_column(row),
                 rand_u32(cell, seed ^ salt::JITTER_X),
             ),
-            self.n.stratum_to_unit_f32(
+            self.n.stratum_to_unit_f32_in::<POW2>(
                 row * columns + sub_row(column),
                 rand_u32(cell, seed ^ salt::JITTER_Y),
             ),
@@ -145,7 +146,7 @@ impl Sampler2D for CorrelatedMultiJittered {
         let seed = hash_u32(pattern);
         let shuffle_x = self.rows.permutation(seed ^ salt::SHUFFLE_X);
         let shuffle_y = self.columns.permutation(seed ^ salt::SHUFFLE_Y);
-        self.point(
+        self.point::<false>(
             seed,
             &self.n.permutation(seed ^ salt::ORDER),
             |row| shuffle_x.apply(row),
@@ -173,18 +174,22 @@ impl Sampler2D for CorrelatedMultiJittered {
             for (column, s) in (0..columns).zip(sub_rows.iter_mut()) {
                 *s = shuffle_y.apply(column);
             }
-            for (index, point) in (0..).zip(out.iter_mut()) {
-                *point = self.point(
-                    seed,
-                    &order,
-                    |row| sub_columns[row as usize],
-                    |column| sub_rows[column as usize],
-                    index,
-                );
+            let (sub_column, sub_row) = (
+                |row: u32| sub_columns[row as usize],
+                |column: u32| sub_rows[column as usize],
+            );
+            if self.n.is_power_of_two() {
+                for (index, point) in (0..).zip(out.iter_mut()) {
+                    *point = self.point::<true>(seed, &order, sub_column, sub_row, index);
+                }
+            } else {
+                for (index, point) in (0..).zip(out.iter_mut()) {
+                    *point = self.point::<false>(seed, &order, sub_column, sub_row, index);
+                }
             }
         } else {
             for (index, point) in (0..).zip(out.iter_mut()) {
-                *point = self.point(
+                *point = self.point::<false>(
                     seed,
                     &order,
                     |row| shuffle_x.apply(row),

@@ -107,17 +107,24 @@ impl Jittered {
 
 impl Jittered {
     /// Sample `index` given the pattern's hash `seed` and order permutation:
-    /// the one formula `sample` and `fill` share.
+    /// the one formula `sample` and `fill` share. `POW2` promises a
+    /// power-of-two `n` (so grid sides too), for a branch-free `fill` loop.
     #[inline(always)]
-    fn point(&self, seed: u32, order: &Permutation, index: u32) -> Vec2 {
+    fn point<const POW2: bool>(&self, seed: u32, order: &Permutation, index: u32) -> Vec2 {
         let cell = order.apply(index);
-        let (row, column) = self.columns.div_rem(cell);
+        let (row, column) = self.columns.div_rem_in::<POW2>(cell);
         Vec2::new(
             self.columns
-                .stratum_to_unit_f32(column, rand_u32(cell, seed ^ salt::JITTER_X)),
+                .stratum_to_unit_f32_in::<POW2>(column, rand_u32(cell, seed ^ salt::JITTER_X)),
             self.rows
-                .stratum_to_unit_f32(row, rand_u32(cell, seed ^ salt::JITTER_Y)),
+                .stratum_to_unit_f32_in::<POW2>(row, rand_u32(cell, seed ^ salt::JITTER_Y)),
         )
+    }
+
+    fn fill_in<const POW2: bool>(&self, seed: u32, order: &Permutation, out: &mut [Vec2]) {
+        for (index, point) in (0..).zip(out.iter_mut()) {
+            *point = self.point::<POW2>(seed, order, index);
+        }
     }
 }
 
@@ -135,7 +142,7 @@ impl Sampler2D for Jittered {
             self.len()
         );
         let seed = hash_u32(pattern);
-        self.point(seed, &self.n.permutation(seed ^ salt::ORDER), index)
+        self.point::<false>(seed, &self.n.permutation(seed ^ salt::ORDER), index)
     }
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
@@ -143,8 +150,10 @@ impl Sampler2D for Jittered {
         // The pattern hash and the permutation's rotation once per set.
         let seed = hash_u32(pattern);
         let order = self.n.permutation(seed ^ salt::ORDER);
-        for (index, point) in (0..).zip(out.iter_mut()) {
-            *point = self.point(seed, &order, index);
+        if self.n.is_power_of_two() {
+            self.fill_in::<true>(seed, &order, out);
+        } else {
+            self.fill_in::<false>(seed, &order, out);
         }
     }
 }

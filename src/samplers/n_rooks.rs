@@ -92,9 +92,16 @@ pub(crate) fn check_rook_count(sampler: &'static str, n: u32) -> Result<(), Erro
 
 impl NRooks {
     /// Sample `index` given the pattern's hash `seed` and its column and row
-    /// permutations: the one formula `sample` and `fill` share.
+    /// permutations: the one formula `sample` and `fill` share. `POW2`
+    /// promises a power-of-two `n`, for a branch-free `fill` loop.
     #[inline(always)]
-    fn point(&self, seed: u32, columns: &Permutation, rows: &Permutation, index: u32) -> Vec2 {
+    fn point<const POW2: bool>(
+        &self,
+        seed: u32,
+        columns: &Permutation,
+        rows: &Permutation,
+        index: u32,
+    ) -> Vec2 {
         // Column and row are two independent permutations of the index, so
         // index order says nothing about position and padded dimension pairs
         // that share an index stay decorrelated.
@@ -102,9 +109,9 @@ impl NRooks {
         let row = rows.apply(index);
         Vec2::new(
             self.n
-                .stratum_to_unit_f32(column, rand_u32(index, seed ^ salt::JITTER_X)),
+                .stratum_to_unit_f32_in::<POW2>(column, rand_u32(index, seed ^ salt::JITTER_X)),
             self.n
-                .stratum_to_unit_f32(row, rand_u32(index, seed ^ salt::JITTER_Y)),
+                .stratum_to_unit_f32_in::<POW2>(row, rand_u32(index, seed ^ salt::JITTER_Y)),
         )
     }
 
@@ -131,7 +138,7 @@ impl Sampler2D for NRooks {
         );
         let seed = hash_u32(pattern);
         let (columns, rows) = self.permutations(seed);
-        self.point(seed, &columns, &rows, index)
+        self.point::<false>(seed, &columns, &rows, index)
     }
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
@@ -139,8 +146,14 @@ impl Sampler2D for NRooks {
         // The pattern hash and both rotations once per set.
         let seed = hash_u32(pattern);
         let (columns, rows) = self.permutations(seed);
-        for (index, point) in (0..).zip(out.iter_mut()) {
-            *point = self.point(seed, &columns, &rows, index);
+        if self.n.is_power_of_two() {
+            for (index, point) in (0..).zip(out.iter_mut()) {
+                *point = self.point::<true>(seed, &columns, &rows, index);
+            }
+        } else {
+            for (index, point) in (0..).zip(out.iter_mut()) {
+                *point = self.point::<false>(seed, &columns, &rows, index);
+            }
         }
     }
 }

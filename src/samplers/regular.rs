@@ -125,15 +125,16 @@ pub(crate) fn check_grid(sampler: &'static str, columns: u32, rows: u32) -> Resu
 
 impl Regular {
     /// Sample `index` given the pattern's order permutation: the one formula
-    /// `sample` and `fill` share.
+    /// `sample` and `fill` share. `POW2` promises a power-of-two `n` (so
+    /// grid sides too), for a branch-free `fill` loop.
     #[inline(always)]
-    fn point(&self, order: &Permutation, index: u32) -> Vec2 {
+    fn point<const POW2: bool>(&self, order: &Permutation, index: u32) -> Vec2 {
         let cell = order.apply(index);
-        let (row, column) = self.columns.div_rem(cell);
+        let (row, column) = self.columns.div_rem_in::<POW2>(cell);
         // Half-way bits put the point at the cell's centre, to within 2^-24.
         Vec2::new(
-            self.columns.stratum_to_unit_f32(column, 1 << 31),
-            self.rows.stratum_to_unit_f32(row, 1 << 31),
+            self.columns.stratum_to_unit_f32_in::<POW2>(column, 1 << 31),
+            self.rows.stratum_to_unit_f32_in::<POW2>(row, 1 << 31),
         )
     }
 }
@@ -151,15 +152,21 @@ impl Sampler2D for Regular {
             "index {index} out of range 0..{}",
             self.len()
         );
-        self.point(&self.n.permutation(hash_u32(pattern) ^ salt::ORDER), index)
+        self.point::<false>(&self.n.permutation(hash_u32(pattern) ^ salt::ORDER), index)
     }
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
         check_fill_len(out.len(), self.len());
         // The permutation (its pattern hash and rotation) once per set.
         let order = self.n.permutation(hash_u32(pattern) ^ salt::ORDER);
-        for (index, point) in (0..).zip(out.iter_mut()) {
-            *point = self.point(&order, index);
+        if self.n.is_power_of_two() {
+            for (index, point) in (0..).zip(out.iter_mut()) {
+                *point = self.point::<true>(&order, index);
+            }
+        } else {
+            for (index, point) in (0..).zip(out.iter_mut()) {
+                *point = self.point::<false>(&order, index);
+            }
         }
     }
 }
