@@ -342,6 +342,17 @@ impl Length {
         }
     }
 
+    /// [`permutation`](Self::permutation), specialised at compile time like
+    /// [`div_rem_in`](Self::div_rem_in).
+    #[inline(always)]
+    pub(crate) const fn permutation_in<const POW2: bool>(self, pattern: u32) -> Permutation {
+        Permutation {
+            len: self,
+            pattern,
+            rotation: self.div_rem_in::<POW2>(pattern).1,
+        }
+    }
+
     /// [`stratum_to_unit_f32`]`(stratum, len, bits)` for `stratum < len <=
     /// 2^24`, without its two 64-bit divisions.
     #[inline(always)]

@@ -104,9 +104,10 @@ impl MultiJittered {
     /// Sample `index` given the pattern's hash `seed`, its order permutation
     /// and the per-column and per-row shuffle patterns (`column_pattern(column)`
     /// shuffles that column's sub-columns, `row_pattern(row)` that row's
-    /// sub-rows): the one formula `sample` and `fill` share.
+    /// sub-rows): the one formula `sample` and `fill` share. `POW2` promises
+    /// a power-of-two `n` (so grid sides too), for a branch-free `fill` loop.
     #[inline(always)]
-    fn point(
+    fn point<const POW2: bool>(
         &self,
         seed: u32,
         order: &Permutation,
@@ -115,21 +116,27 @@ impl MultiJittered {
         index: u32,
     ) -> Vec2 {
         let cell = order.apply(index);
-        let (row, column) = self.columns.div_rem(cell);
+        let (row, column) = self.columns.div_rem_in::<POW2>(cell);
         // Coarse column `column` spans fine columns [column * rows, (column +
         // 1) * rows) and holds one point per coarse row: the column's own
         // shuffle of its rows picks which fine column each point takes.
         // Likewise for rows. Distinct shuffles per column make it Chiu et al.'s
         // (uncorrelated) multi-jitter.
-        let sub_column = self.rows.permutation(column_pattern(column)).apply(row);
-        let sub_row = self.columns.permutation(row_pattern(row)).apply(column);
+        let sub_column = self
+            .rows
+            .permutation_in::<POW2>(column_pattern(column))
+            .apply(row);
+        let sub_row = self
+            .columns
+            .permutation_in::<POW2>(row_pattern(row))
+            .apply(column);
         let (columns, rows) = (self.columns.get(), self.rows.get());
         Vec2::new(
-            self.n.stratum_to_unit_f32(
+            self.n.stratum_to_unit_f32_in::<POW2>(
                 column * rows + sub_column,
                 rand_u32(cell, seed ^ salt::JITTER_X),
             ),
-            self.n.stratum_to_unit_f32(
+            self.n.stratum_to_unit_f32_in::<POW2>(
                 row * columns + sub_row,
                 rand_u32(cell, seed ^ salt::JITTER_Y),
             ),
@@ -151,7 +158,7 @@ impl Sampler2D for MultiJittered {
             self.len()
         );
         let seed = hash_u32(pattern);
-        self.point(
+        self.point::<false>(
             seed,
             &self.n.permutation(seed ^ salt::ORDER),
             |column| hash_combine(seed ^ salt::SHUFFLE_X, column),
@@ -176,18 +183,22 @@ impl Sampler2D for MultiJittered {
             for (row, p) in (0..rows).zip(row_patterns.iter_mut()) {
                 *p = hash_combine(seed ^ salt::SHUFFLE_Y, row);
             }
-            for (index, point) in (0..).zip(out.iter_mut()) {
-                *point = self.point(
-                    seed,
-                    &order,
-                    |column| column_patterns[column as usize],
-                    |row| row_patterns[row as usize],
-                    index,
-                );
+            let (column_pattern, row_pattern) = (
+                |column: u32| column_patterns[column as usize],
+                |row: u32| row_patterns[row as usize],
+            );
+            if self.n.is_power_of_two() {
+                for (index, point) in (0..).zip(out.iter_mut()) {
+                    *point = self.point::<true>(seed, &order, column_pattern, row_pattern, index);
+                }
+            } else {
+                for (index, point) in (0..).zip(out.iter_mut()) {
+                    *point = self.point::<false>(seed, &order, column_pattern, row_pattern, index);
+                }
             }
         } else {
             for (index, point) in (0..).zip(out.iter_mut()) {
-                *point = self.point(
+                *point = self.point::<false>(
                     seed,
                     &order,
                     |column| hash_combine(seed ^ salt::SHUFFLE_X, column),
