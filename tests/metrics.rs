@@ -555,12 +555,14 @@ fn stratification_checks() {
         (0..16).map(|i| Vec2::new(i as f32 / 16.0, (15 - i) as f32 / 16.0)).collect();
     assert!(is_latin(&edges).unwrap());
     // Cells come from the exact f32 values: 0.6f32 is just above 6/10 and
-    // 0.7f32 just below 7/10, so both are in column 6 and tenths are not Latin.
+    // 0.7f32 just below 7/10 (as is 0.9f32 below 9/10), so 0.6 and 0.7 share
+    // column 6 and the tenths are not Latin.
     let tenths: Vec<Vec2> =
         (0..10).map(|i| Vec2::new(i as f32 / 10.0, (i as f32 + 0.5) / 10.0)).collect();
     assert!(!is_latin(&tenths).unwrap());
     let mut fixed = tenths.clone();
     fixed[7].x = f32::from_bits(0.7f32.to_bits() + 1);
+    fixed[9].x = f32::from_bits(0.9f32.to_bits() + 1);
     assert!(is_latin(&fixed).unwrap());
     // Errors.
     assert!(matches!(is_stratified(&grid, 0, 5), Err(Error::ZeroGridSide { .. })));
