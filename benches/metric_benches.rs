@@ -18,34 +18,62 @@ const SIZES: [u32; 4] = [10, 14, 16, 20];
 
 fn random_points(n: usize) -> Vec<Vec2> {
     let mut rng = Pcg32::seed_from_u64(0x5eed_0003);
-    (0..n).map(|_| Vec2::new(rng.random::<f32>(), rng.random::<f32>())).collect()
+    (0..n)
+        .map(|_| Vec2::new(rng.random::<f32>(), rng.random::<f32>()))
+        .collect()
 }
 
 fn hammersley(m: u32) -> Vec<Vec2> {
     let n = 1u32 << m;
     (0..n)
-        .map(|i| Vec2::new(i as f32 / n as f32, (i.reverse_bits() >> (32 - m)) as f32 / n as f32))
+        .map(|i| {
+            Vec2::new(
+                i as f32 / n as f32,
+                (i.reverse_bits() >> (32 - m)) as f32 / n as f32,
+            )
+        })
         .collect()
 }
 
 type Metric = fn(&[Vec2]) -> f64;
+/// A check, given the set and log2 of its size.
+type Check = fn(&[Vec2], u32) -> bool;
 
 fn metrics(c: &mut Criterion) {
     let f64_metrics: [(&str, Metric, u32); 7] = [
-        ("star_discrepancy", |p| metrics::star_discrepancy(p).unwrap(), 20),
-        ("l2_star_discrepancy", |p| metrics::l2_star_discrepancy(p).unwrap(), 20),
-        ("centered_l2_discrepancy", |p| metrics::centered_l2_discrepancy(p).unwrap(), 20),
-        ("wraparound_l2_discrepancy", |p| metrics::wraparound_l2_discrepancy(p).unwrap(), 16),
+        (
+            "star_discrepancy",
+            |p| metrics::star_discrepancy(p).unwrap(),
+            20,
+        ),
+        (
+            "l2_star_discrepancy",
+            |p| metrics::l2_star_discrepancy(p).unwrap(),
+            20,
+        ),
+        (
+            "centered_l2_discrepancy",
+            |p| metrics::centered_l2_discrepancy(p).unwrap(),
+            20,
+        ),
+        (
+            "wraparound_l2_discrepancy",
+            |p| metrics::wraparound_l2_discrepancy(p).unwrap(),
+            16,
+        ),
         ("min_distance", |p| metrics::min_distance(p).unwrap(), 20),
-        ("toroidal_min_distance", |p| metrics::toroidal_min_distance(p).unwrap(), 20),
+        (
+            "toroidal_min_distance",
+            |p| metrics::toroidal_min_distance(p).unwrap(),
+            20,
+        ),
         (
             "normalized_toroidal_min_distance",
             |p| metrics::normalized_toroidal_min_distance(p).unwrap(),
             20,
         ),
     ];
-    let random: Vec<(u32, Vec<Vec2>)> =
-        SIZES.iter().map(|&k| (k, random_points(1 << k))).collect();
+    let random: Vec<(u32, Vec<Vec2>)> = SIZES.iter().map(|&k| (k, random_points(1 << k))).collect();
     for (name, metric, max_log2) in f64_metrics {
         let mut group = c.benchmark_group(format!("metric/{name}"));
         group
@@ -65,7 +93,7 @@ fn metrics(c: &mut Criterion) {
     }
 
     let nets: Vec<(u32, Vec<Vec2>)> = SIZES.iter().map(|&k| (k, hammersley(k))).collect();
-    let checks: [(&str, fn(&[Vec2], u32) -> bool); 3] = [
+    let checks: [(&str, Check); 3] = [
         ("is_latin", |p, _| metrics::is_latin(p).unwrap()),
         ("is_stratified", |p, k| {
             metrics::is_stratified(p, 1 << (k / 2), 1 << (k - k / 2)).unwrap()

@@ -111,12 +111,30 @@ fn main() -> ExitCode {
 fn report(points: &[Vec2], grid: Option<(u32, u32)>) -> Result<String, wellspread::Error> {
     let mut fields: Vec<(&str, String)> = vec![
         ("n", points.len().to_string()),
-        ("star_discrepancy", format!("{:?}", metrics::star_discrepancy(points)?)),
-        ("l2_star_discrepancy", format!("{:?}", metrics::l2_star_discrepancy(points)?)),
-        ("centered_l2_discrepancy", format!("{:?}", metrics::centered_l2_discrepancy(points)?)),
-        ("wraparound_l2_discrepancy", format!("{:?}", metrics::wraparound_l2_discrepancy(points)?)),
-        ("min_distance", format!("{:?}", metrics::min_distance(points)?)),
-        ("toroidal_min_distance", format!("{:?}", metrics::toroidal_min_distance(points)?)),
+        (
+            "star_discrepancy",
+            format!("{:?}", metrics::star_discrepancy(points)?),
+        ),
+        (
+            "l2_star_discrepancy",
+            format!("{:?}", metrics::l2_star_discrepancy(points)?),
+        ),
+        (
+            "centered_l2_discrepancy",
+            format!("{:?}", metrics::centered_l2_discrepancy(points)?),
+        ),
+        (
+            "wraparound_l2_discrepancy",
+            format!("{:?}", metrics::wraparound_l2_discrepancy(points)?),
+        ),
+        (
+            "min_distance",
+            format!("{:?}", metrics::min_distance(points)?),
+        ),
+        (
+            "toroidal_min_distance",
+            format!("{:?}", metrics::toroidal_min_distance(points)?),
+        ),
         (
             "normalized_toroidal_min_distance",
             format!("{:?}", metrics::normalized_toroidal_min_distance(points)?),
@@ -132,8 +150,14 @@ fn report(points: &[Vec2], grid: Option<(u32, u32)>) -> Result<String, wellsprea
         ),
     ];
     if let Some((columns, rows)) = grid {
-        fields.push(("is_stratified", metrics::is_stratified(points, columns, rows)?.to_string()));
+        fields.push((
+            "is_stratified",
+            metrics::is_stratified(points, columns, rows)?.to_string(),
+        ));
     }
-    let body: Vec<String> = fields.iter().map(|(k, v)| format!("\"{k}\": {v}")).collect();
+    let body: Vec<String> = fields
+        .iter()
+        .map(|(k, v)| format!("\"{k}\": {v}"))
+        .collect();
     Ok(format!("{{{}}}", body.join(", ")))
 }

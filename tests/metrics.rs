@@ -48,7 +48,11 @@ fn hammersley(m: u32) -> Vec<Vec2> {
     let n = 1u32 << m;
     (0..n)
         .map(|i| {
-            let y = if m == 0 { 0 } else { i.reverse_bits() >> (32 - m) };
+            let y = if m == 0 {
+                0
+            } else {
+                i.reverse_bits() >> (32 - m)
+            };
             Vec2::new(i as f32 / n as f32, y as f32 / n as f32)
         })
         .collect()
@@ -66,9 +70,17 @@ fn brute_star(points: &[Vec2]) -> f64 {
     let edges_y: Vec<f64> = ys.iter().copied().chain([1.0]).collect();
     for &a in &edges_x {
         for &b in &edges_y {
-            let open = xs.iter().zip(&ys).filter(|&(&x, &y)| x < a && y < b).count();
+            let open = xs
+                .iter()
+                .zip(&ys)
+                .filter(|&(&x, &y)| x < a && y < b)
+                .count();
             best = best.max(a * b - open as f64 / n);
-            let closed = xs.iter().zip(&ys).filter(|&(&x, &y)| x <= a && y <= b).count();
+            let closed = xs
+                .iter()
+                .zip(&ys)
+                .filter(|&(&x, &y)| x <= a && y <= b)
+                .count();
             best = best.max(closed as f64 / n - a * b);
         }
     }
@@ -270,13 +282,16 @@ fn integrate_wraparound(points: &[Vec2]) -> f64 {
             let (len, member): (f64, Vec<bool>) = if s <= t {
                 (t - s, coords.iter().map(|&v| s <= v && v < t).collect())
             } else {
-                (1.0 - s + t, coords.iter().map(|&v| v >= s || v < t).collect())
+                (
+                    1.0 - s + t,
+                    coords.iter().map(|&v| v >= s || v < t).collect(),
+                )
             };
-            for i in 0..n {
-                if member[i] {
+            for (i, &in_i) in member.iter().enumerate() {
+                if in_i {
                     a.l1[i] += w * len;
-                    for j in 0..n {
-                        if member[j] {
+                    for (j, &in_j) in member.iter().enumerate() {
+                        if in_j {
                             a.ii[i * n + j] += w;
                         }
                     }
@@ -317,8 +332,16 @@ fn integrate_wraparound(points: &[Vec2]) -> f64 {
 
 #[test]
 fn star_one_point() {
-    for (x, y) in [(0.5, 0.25), (0.0, 0.0), (0.999, 0.001), (0.3, 0.7), (0.75, 0.75)] {
-        let want = (1.0 - f64::from(x) * f64::from(y)).max(f64::from(x)).max(f64::from(y));
+    for (x, y) in [
+        (0.5, 0.25),
+        (0.0, 0.0),
+        (0.999, 0.001),
+        (0.3, 0.7),
+        (0.75, 0.75),
+    ] {
+        let want = (1.0 - f64::from(x) * f64::from(y))
+            .max(f64::from(x))
+            .max(f64::from(y));
         let got = star_discrepancy(&[Vec2::new(x, y)]).unwrap();
         assert_close("one point", got, want, 1e-12);
     }
@@ -338,23 +361,48 @@ fn star_centred_and_corner_grids() {
                 .collect();
             let (mf, kf) = (f64::from(m), f64::from(k));
             let want = 1.0 / (2.0 * mf) + 1.0 / (2.0 * kf) - 1.0 / (4.0 * mf * kf);
-            assert_close("centred grid", star_discrepancy(&centred).unwrap(), want, 1e-12);
+            assert_close(
+                "centred grid",
+                star_discrepancy(&centred).unwrap(),
+                want,
+                1e-12,
+            );
         }
         let corner: Vec<Vec2> = (0..m * m)
             .map(|i| Vec2::new((i % m) as f32 / m as f32, (i / m) as f32 / m as f32))
             .collect();
         let mf = f64::from(m);
         let want = (2.0 * mf - 1.0) / (mf * mf);
-        assert_close("corner grid", star_discrepancy(&corner).unwrap(), want, 1e-12);
+        assert_close(
+            "corner grid",
+            star_discrepancy(&corner).unwrap(),
+            want,
+            1e-12,
+        );
     }
     // A grid whose f32 coordinates are rounded: close to the closed form.
     let (m, k) = (7u32, 5u32);
     let centred: Vec<Vec2> = (0..m * k)
-        .map(|i| Vec2::new(((i % m) as f32 + 0.5) / m as f32, ((i / m) as f32 + 0.5) / k as f32))
+        .map(|i| {
+            Vec2::new(
+                ((i % m) as f32 + 0.5) / m as f32,
+                ((i / m) as f32 + 0.5) / k as f32,
+            )
+        })
         .collect();
     let want = 1.0 / 14.0 + 1.0 / 10.0 - 1.0 / 140.0;
-    assert_close("7 x 5 grid", star_discrepancy(&centred).unwrap(), want, 1e-6);
-    assert_close("7 x 5 grid brute", star_discrepancy(&centred).unwrap(), brute_star(&centred), 1e-12);
+    assert_close(
+        "7 x 5 grid",
+        star_discrepancy(&centred).unwrap(),
+        want,
+        1e-6,
+    );
+    assert_close(
+        "7 x 5 grid brute",
+        star_discrepancy(&centred).unwrap(),
+        brute_star(&centred),
+        1e-12,
+    );
 }
 
 #[test]
@@ -364,7 +412,12 @@ fn star_hammersley_closed_form() {
         let n = f64::from(1u32 << m);
         let sign = if m % 2 == 0 { 1.0 } else { -1.0 };
         let want = (f64::from(m) / 3.0 + 13.0 / 9.0 - 4.0 * sign / (9.0 * n)) / n;
-        assert_close(&format!("Hammersley m = {m}"), star_discrepancy(&points).unwrap(), want, 1e-12);
+        assert_close(
+            &format!("Hammersley m = {m}"),
+            star_discrepancy(&points).unwrap(),
+            want,
+            1e-12,
+        );
     }
 }
 
@@ -376,14 +429,27 @@ fn star_matches_brute_force_on_structured_sets() {
         vec![Vec2::ZERO; 5],
         vec![Vec2::new(top, top); 3],
         vec![Vec2::new(0.0, top), Vec2::new(top, 0.0)],
-        (0..40).map(|i| Vec2::new((i % 3) as f32 / 3.0, (i % 7) as f32 / 7.0)).collect(),
+        (0..40)
+            .map(|i| Vec2::new((i % 3) as f32 / 3.0, (i % 7) as f32 / 7.0))
+            .collect(),
         (0..33).map(|i| Vec2::new(0.5, (i as f32) / 33.0)).collect(),
-        (0..33).map(|i| Vec2::new((i as f32) / 33.0, 0.25)).collect(),
-        (0..50).map(|i| Vec2::new(i as f32 / 50.0, i as f32 / 50.0)).collect(),
-        (0..50).map(|i| Vec2::new(i as f32 / 50.0, (49 - i) as f32 / 50.0)).collect(),
+        (0..33)
+            .map(|i| Vec2::new((i as f32) / 33.0, 0.25))
+            .collect(),
+        (0..50)
+            .map(|i| Vec2::new(i as f32 / 50.0, i as f32 / 50.0))
+            .collect(),
+        (0..50)
+            .map(|i| Vec2::new(i as f32 / 50.0, (49 - i) as f32 / 50.0))
+            .collect(),
     ];
     for points in &sets {
-        assert_close("structured", star_discrepancy(points).unwrap(), brute_star(points), 1e-12);
+        assert_close(
+            "structured",
+            star_discrepancy(points).unwrap(),
+            brute_star(points),
+            1e-12,
+        );
     }
 }
 
@@ -399,7 +465,10 @@ fn unit_f32() -> impl Strategy<Value = f32> {
 }
 
 fn unit_points(max: usize) -> impl Strategy<Value = Vec<Vec2>> {
-    prop::collection::vec((unit_f32(), unit_f32()).prop_map(|(x, y)| Vec2::new(x, y)), 1..=max)
+    prop::collection::vec(
+        (unit_f32(), unit_f32()).prop_map(|(x, y)| Vec2::new(x, y)),
+        1..=max,
+    )
 }
 
 proptest! {
@@ -438,7 +507,12 @@ proptest! {
 fn star_random_sets_match_brute_force_at_moderate_n() {
     for (n, seed) in [(200, 1), (257, 2), (300, 3)] {
         let points = random_points(n, seed);
-        assert_close("random", star_discrepancy(&points).unwrap(), brute_star(&points), 1e-12);
+        assert_close(
+            "random",
+            star_discrepancy(&points).unwrap(),
+            brute_star(&points),
+            1e-12,
+        );
     }
 }
 
@@ -449,23 +523,48 @@ fn l2_forms_match_numerical_integration() {
     for (n, seed) in [(1, 10), (2, 11), (5, 12), (9, 13)] {
         let points = dyadic_points(n, seed);
         let star = integrate_local_discrepancy(&points, |a| (0.0, a), true);
-        assert_close("L2-star", l2_star_discrepancy(&points).unwrap(), star.sqrt(), 1e-12);
+        assert_close(
+            "L2-star",
+            l2_star_discrepancy(&points).unwrap(),
+            star.sqrt(),
+            1e-12,
+        );
         let centred = integrate_local_discrepancy(
             &points,
             |a| if a < 0.5 { (0.0, a) } else { (a, 1.0) },
             false,
         );
-        assert_close("centred", centered_l2_discrepancy(&points).unwrap(), centred.sqrt(), 1e-12);
+        assert_close(
+            "centred",
+            centered_l2_discrepancy(&points).unwrap(),
+            centred.sqrt(),
+            1e-12,
+        );
         let wrap = integrate_wraparound(&points);
-        assert_close("wrap-around", wraparound_l2_discrepancy(&points).unwrap(), wrap.sqrt(), 1e-10);
+        assert_close(
+            "wrap-around",
+            wraparound_l2_discrepancy(&points).unwrap(),
+            wrap.sqrt(),
+            1e-10,
+        );
     }
 }
 
 #[test]
 fn l2_forms_match_direct_formulas_at_4096() {
     for points in [random_points(4096, 7), hammersley(12)] {
-        assert_close("L2-star", l2_star_discrepancy(&points).unwrap(), direct_l2_star_sq(&points).sqrt(), 1e-9);
-        assert_close("centred", centered_l2_discrepancy(&points).unwrap(), direct_centered_sq(&points).sqrt(), 1e-9);
+        assert_close(
+            "L2-star",
+            l2_star_discrepancy(&points).unwrap(),
+            direct_l2_star_sq(&points).sqrt(),
+            1e-9,
+        );
+        assert_close(
+            "centred",
+            centered_l2_discrepancy(&points).unwrap(),
+            direct_centered_sq(&points).sqrt(),
+            1e-9,
+        );
         assert_close(
             "wrap-around",
             wraparound_l2_discrepancy(&points).unwrap(),
@@ -486,11 +585,17 @@ fn min_distances_match_brute_force_on_seams_and_grids() {
         (0..300)
             .map(|i| {
                 let t = i as f32 / 300.0;
-                if i % 2 == 0 { Vec2::new(0.001 * t, t) } else { Vec2::new(0.9995 - 0.001 * t, t + 0.0001) }
+                if i % 2 == 0 {
+                    Vec2::new(0.001 * t, t)
+                } else {
+                    Vec2::new(0.9995 - 0.001 * t, t + 0.0001)
+                }
             })
             .collect(),
         // A regular grid: every distance is the same, wider than a cell.
-        (0..256).map(|i| Vec2::new((i % 16) as f32 / 16.0, (i / 16) as f32 / 16.0)).collect(),
+        (0..256)
+            .map(|i| Vec2::new((i % 16) as f32 / 16.0, (i / 16) as f32 / 16.0))
+            .collect(),
         // A hexagonal-ish lattice.
         (0..300)
             .map(|i| {
@@ -500,24 +605,40 @@ fn min_distances_match_brute_force_on_seams_and_grids() {
             .collect(),
         // Far apart: two points, and a corner pair.
         vec![Vec2::new(0.0, 0.0), Vec2::new(0.9, 0.9)],
-        vec![Vec2::new(0.02, 0.98), Vec2::new(0.97, 0.01), Vec2::new(0.5, 0.5)],
+        vec![
+            Vec2::new(0.02, 0.98),
+            Vec2::new(0.97, 0.01),
+            Vec2::new(0.5, 0.5),
+        ],
     ];
     // Duplicates.
     let mut dup = random_points(100, 23);
     dup.push(dup[17]);
     sets.push(dup);
     for points in &sets {
-        assert_eq!(min_distance(points).unwrap(), brute_min_distance(points, false));
-        assert_eq!(toroidal_min_distance(points).unwrap(), brute_min_distance(points, true));
+        assert_eq!(
+            min_distance(points).unwrap(),
+            brute_min_distance(points, false)
+        );
+        assert_eq!(
+            toroidal_min_distance(points).unwrap(),
+            brute_min_distance(points, true)
+        );
     }
 }
 
 #[test]
 fn normalized_toroidal_min_distance_of_a_grid() {
-    let grid: Vec<Vec2> =
-        (0..1024).map(|i| Vec2::new((i % 32) as f32 / 32.0, (i / 32) as f32 / 32.0)).collect();
+    let grid: Vec<Vec2> = (0..1024)
+        .map(|i| Vec2::new((i % 32) as f32 / 32.0, (i / 32) as f32 / 32.0))
+        .collect();
     let want = (1.0 / 32.0) / (2.0 / (3.0f64.sqrt() * 1024.0)).sqrt();
-    assert_close("normalised", normalized_toroidal_min_distance(&grid).unwrap(), want, 1e-12);
+    assert_close(
+        "normalised",
+        normalized_toroidal_min_distance(&grid).unwrap(),
+        want,
+        1e-12,
+    );
 }
 
 // ------------------------------------------------------- stratification
@@ -551,27 +672,38 @@ fn stratification_checks() {
     let doubled: Vec<Vec2> = grid.iter().chain(grid.iter()).copied().collect();
     assert!(is_stratified(&doubled, 3, 5).unwrap());
     // A point on a cell's left edge is in that cell.
-    let edges: Vec<Vec2> =
-        (0..16).map(|i| Vec2::new(i as f32 / 16.0, (15 - i) as f32 / 16.0)).collect();
+    let edges: Vec<Vec2> = (0..16)
+        .map(|i| Vec2::new(i as f32 / 16.0, (15 - i) as f32 / 16.0))
+        .collect();
     assert!(is_latin(&edges).unwrap());
     // Cells come from the exact f32 values: 0.6f32 is just above 6/10 and
     // 0.7f32 just below 7/10 (as is 0.9f32 below 9/10), so 0.6 and 0.7 share
     // column 6 and the tenths are not Latin.
-    let tenths: Vec<Vec2> =
-        (0..10).map(|i| Vec2::new(i as f32 / 10.0, (i as f32 + 0.5) / 10.0)).collect();
+    let tenths: Vec<Vec2> = (0..10)
+        .map(|i| Vec2::new(i as f32 / 10.0, (i as f32 + 0.5) / 10.0))
+        .collect();
     assert!(!is_latin(&tenths).unwrap());
     let mut fixed = tenths.clone();
     fixed[7].x = f32::from_bits(0.7f32.to_bits() + 1);
     fixed[9].x = f32::from_bits(0.9f32.to_bits() + 1);
     assert!(is_latin(&fixed).unwrap());
     // Errors.
-    assert!(matches!(is_stratified(&grid, 0, 5), Err(Error::ZeroGridSide { .. })));
-    assert!(matches!(is_stratified(&grid, 2, 5), Err(Error::GridDoesNotDivide { n: 15, .. })));
+    assert!(matches!(
+        is_stratified(&grid, 0, 5),
+        Err(Error::ZeroGridSide { .. })
+    ));
+    assert!(matches!(
+        is_stratified(&grid, 2, 5),
+        Err(Error::GridDoesNotDivide { n: 15, .. })
+    ));
     assert!(matches!(
         is_stratified(&grid, u32::MAX, u32::MAX),
         Err(Error::GridDoesNotDivide { .. })
     ));
-    assert!(matches!(is_net_base2(&grid), Err(Error::NotPowerOfTwo { n: 15 })));
+    assert!(matches!(
+        is_net_base2(&grid),
+        Err(Error::NotPowerOfTwo { n: 15 })
+    ));
 }
 
 // ------------------------------------------------------------ bad input
@@ -602,10 +734,18 @@ fn expected_error(points: &[Vec2]) -> Option<Error> {
     }
     for (index, p) in points.iter().enumerate() {
         if !p.x.is_finite() || !p.y.is_finite() {
-            return Some(Error::NonFinitePoint { index, x: p.x, y: p.y });
+            return Some(Error::NonFinitePoint {
+                index,
+                x: p.x,
+                y: p.y,
+            });
         }
         if !(p.x >= 0.0 && p.x < 1.0 && p.y >= 0.0 && p.y < 1.0) {
-            return Some(Error::PointOutOfRange { index, x: p.x, y: p.y });
+            return Some(Error::PointOutOfRange {
+                index,
+                x: p.x,
+                y: p.y,
+            });
         }
     }
     None
@@ -683,15 +823,27 @@ fn error_messages_name_the_point() {
     let err = star_discrepancy(&points).unwrap_err();
     assert!(matches!(err, Error::PointOutOfRange { index: 1, .. }));
     let msg = err.to_string();
-    assert!(msg.contains("point 1") && msg.contains("(1, 0.25)"), "{msg}");
+    assert!(
+        msg.contains("point 1") && msg.contains("(1, 0.25)"),
+        "{msg}"
+    );
     let err = min_distance(&[Vec2::new(0.5, f32::NAN)]).unwrap_err();
     assert!(matches!(err, Error::NonFinitePoint { index: 0, .. }));
-    assert!(matches!(l2_star_discrepancy(&[]), Err(Error::EmptyPointSet)));
+    assert!(matches!(
+        l2_star_discrepancy(&[]),
+        Err(Error::EmptyPointSet)
+    ));
     // -0.0 is 0.0.
     let neg = [Vec2::new(-0.0, 0.5), Vec2::new(0.5, -0.0)];
     let pos = [Vec2::new(0.0, 0.5), Vec2::new(0.5, 0.0)];
-    assert_eq!(star_discrepancy(&neg).unwrap(), star_discrepancy(&pos).unwrap());
-    assert_eq!(l2_star_discrepancy(&neg).unwrap(), l2_star_discrepancy(&pos).unwrap());
+    assert_eq!(
+        star_discrepancy(&neg).unwrap(),
+        star_discrepancy(&pos).unwrap()
+    );
+    assert_eq!(
+        l2_star_discrepancy(&neg).unwrap(),
+        l2_star_discrepancy(&pos).unwrap()
+    );
     assert_eq!(min_distance(&neg).unwrap(), min_distance(&pos).unwrap());
     assert!(is_latin(&neg).unwrap());
 }

@@ -225,7 +225,10 @@ impl Kinetic {
         for j in slots {
             let (sl, cl) = (self.slope[j], self.raw[j]);
             while len >= 2 {
-                let (i1, i2) = (self.hull[base + len - 2] as usize, self.hull[base + len - 1] as usize);
+                let (i1, i2) = (
+                    self.hull[base + len - 2] as usize,
+                    self.hull[base + len - 1] as usize,
+                );
                 let (s1, c1, s2, c2) = (self.slope[i1], self.raw[i1], self.slope[i2], self.raw[i2]);
                 // Line 2 never wins if line l overtakes it no later than it
                 // overtakes line 1.
@@ -687,7 +690,9 @@ mod tests {
         let mut state = 12345u64;
         let mut t = 0.0;
         for _ in 0..400 {
-            state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             let a = (state >> 33) as usize % (len + 1);
             let b = (state >> 13) as usize % (len + 1);
             let (lo, hi) = (a.min(b), a.max(b));
@@ -698,7 +703,9 @@ mod tests {
                 *cj += f64::from(d);
             }
             tree.advance(t);
-            let want = (0..len).map(|j| slopes[j] * t + c[j]).fold(f64::MIN, f64::max);
+            let want = (0..len)
+                .map(|j| slopes[j] * t + c[j])
+                .fold(f64::MIN, f64::max);
             assert!((tree.max_at(t) - want).abs() < 1e-9, "t = {t}");
             t += ((state >> 40) % 7) as f64 * 0.01;
         }

@@ -271,7 +271,11 @@ mod tests {
     fn one_point_is_an_error() {
         assert!(matches!(
             min_distance(&[Vec2::ZERO]),
-            Err(Error::TooFewPoints { needed: 2, got: 1, .. })
+            Err(Error::TooFewPoints {
+                needed: 2,
+                got: 1,
+                ..
+            })
         ));
     }
 }

@@ -207,7 +207,10 @@ mod tests {
     fn zero_grid_side_is_an_error() {
         assert!(matches!(
             is_stratified(&[Vec2::ZERO], 0, 1),
-            Err(Error::ZeroGridSide { columns: 0, rows: 1 })
+            Err(Error::ZeroGridSide {
+                columns: 0,
+                rows: 1
+            })
         ));
         assert!(matches!(
             is_stratified(&[Vec2::ZERO; 3], 2, 1),
