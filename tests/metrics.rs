@@ -628,6 +628,47 @@ fn min_distances_match_brute_force_on_seams_and_grids() {
             Vec2::new(0.5, 0.5),
         ],
     ];
+    // Clusters and degenerate boxes: a tiny cluster (bounding-box grid), one
+    // column, one row, identical points, and a cluster straddling the corner.
+    let tiny: Vec<Vec2> = random_points(2000, 24)
+        .iter()
+        .map(|p| Vec2::new(0.3 + p.x * 1e-4, 0.6 + p.y * 1e-4))
+        .collect();
+    sets.push(tiny);
+    sets.push(
+        random_points(500, 25)
+            .iter()
+            .map(|p| Vec2::new(0.25, p.y))
+            .collect(),
+    );
+    sets.push(
+        random_points(500, 26)
+            .iter()
+            .map(|p| Vec2::new(p.x, 0.75))
+            .collect(),
+    );
+    sets.push(vec![Vec2::new(0.5, 0.5); 50]);
+    sets.push(
+        random_points(800, 27)
+            .iter()
+            .map(|p| Vec2::new((p.x * 0.02 + 0.99) % 1.0, (p.y * 0.02 + 0.99) % 1.0))
+            .collect(),
+    );
+    // A narrow vertical strip: x is not wrapped, y is (pairs across y = 0).
+    sets.push(
+        random_points(3000, 31)
+            .iter()
+            .map(|p| Vec2::new(0.2 + p.x * 1e-3, p.y))
+            .collect(),
+    );
+    // Half spread out, half in a strip: non-square cells.
+    let mut strip = random_points(400, 28);
+    strip.extend(
+        random_points(400, 29)
+            .iter()
+            .map(|p| Vec2::new(p.x, 0.5 + p.y * 0.001)),
+    );
+    sets.push(strip);
     // Duplicates.
     let mut dup = random_points(100, 23);
     dup.push(dup[17]);

@@ -14,14 +14,15 @@ use crate::Error;
 ///
 /// # Algorithm
 ///
-/// Points are bucketed by a counting sort into a `g x g` grid with
-/// `g ≈ sqrt(n / 2)` (about two points per cell). A first pass compares each
-/// point with the points of its own and the neighbouring cells, which yields
-/// an upper bound `δ` on the answer; if `δ` exceeds the cell side, a second
-/// pass widens the neighbourhood to `ceil(δ / side)` cells, which is at most 3
-/// because `δ` came from neighbouring cells. O(n) expected time for any set
-/// that is not packed into a tiny region (O(n²) in the degenerate worst case of
-/// all points in one cell), O(n) memory; no distance matrix.
+/// Points are bucketed by a counting sort into a grid of about `n / 2` cells
+/// (about two points per cell) over their bounding box. A first pass compares
+/// each point with the points of its own and the neighbouring cells, which
+/// yields an upper bound `δ` on the answer; if `δ` exceeds a cell side, a
+/// second pass widens the neighbourhood to `ceil(δ / side)` cells, which is at
+/// most 3 because `δ` came from neighbouring cells. Coincident points end the
+/// search at once. O(n) expected time and O(n) memory for spread-out sets (no
+/// distance matrix); a dense cluster of k distinct points inside one cell of a
+/// spread-out set costs O(k²).
 ///
 /// # Errors
 ///
@@ -47,8 +48,10 @@ pub fn min_distance(points: &[Vec2]) -> Result<f64, Error> {
 ///
 /// # Algorithm
 ///
-/// As [`min_distance`], with grid neighbours taken modulo the grid size.
-/// O(n) expected time, O(n) memory.
+/// As [`min_distance`]. On an axis where the points span more than 1/2 the
+/// grid covers all of `[0, 1)` and neighbours wrap modulo the grid size; on a
+/// narrower axis no pair is closer across the seam, and the grid covers just
+/// the points' extent. O(n) expected time, O(n) memory.
 ///
 /// # Errors
 ///
@@ -108,32 +111,55 @@ fn check(points: &[Vec2], metric: &'static str) -> Result<(), Error> {
     Ok(())
 }
 
-/// Points bucketed into a `g x g` grid: `start[c]..start[c + 1]` indexes the
-/// points of cell `c = cy g + cx` in `xs`, `ys`.
+/// Points bucketed into a `gx x gy` grid over a rectangle: `start[c]..start[c + 1]`
+/// indexes the points of cell `c = cy gx + cx` in `xs`, `ys`.
 struct Grid {
-    g: usize,
+    gx: usize,
+    gy: usize,
+    /// Cell sides (meaningful only where the grid has more than one cell).
+    side_x: f64,
+    side_y: f64,
     start: Vec<u32>,
     xs: Vec<f64>,
     ys: Vec<f64>,
 }
 
 impl Grid {
-    fn new(points: &[Vec2]) -> Self {
+    /// A grid of about `n / 2` cells over the rectangle at `(ox, oy)` with
+    /// sides `(wx, wy)`, with cells as square as the rectangle allows.
+    fn new(points: &[Vec2], [ox, oy, wx, wy]: [f64; 4]) -> Self {
         let n = points.len();
-        // About two points per cell; at most 2^12 cells a side (64 MiB of
-        // cell starts), beyond which cells just hold more points.
-        let g = (libm::sqrt(n as f64 / 2.0) as usize).clamp(1, 1 << 12);
-        let gf = g as f64;
-        let cell_of = |v: f64| ((v * gf) as usize).min(g - 1);
+        let cells = (n / 2).clamp(1, 1 << 24);
+        let (gx, gy) = if wx > 0.0 && wy > 0.0 {
+            let gx = (libm::sqrt(cells as f64 * wx / wy) as usize).clamp(1, cells);
+            (gx, (cells / gx).max(1))
+        } else if wx > 0.0 {
+            (cells, 1)
+        } else if wy > 0.0 {
+            (1, cells)
+        } else {
+            (1, 1)
+        };
+        let axis = |v: f64, o: f64, w: f64, g: usize| {
+            if g == 1 {
+                0
+            } else {
+                (((v - o) / w * g as f64) as usize).min(g - 1)
+            }
+        };
         let cells: Vec<u32> = points
             .iter()
-            .map(|p| (cell_of(coord(p.y)) * g + cell_of(coord(p.x))) as u32)
+            .map(|p| {
+                let cx = axis(coord(p.x), ox, wx, gx);
+                let cy = axis(coord(p.y), oy, wy, gy);
+                (cy * gx + cx) as u32
+            })
             .collect();
-        let mut start = vec![0u32; g * g + 1];
+        let mut start = vec![0u32; gx * gy + 1];
         for &c in &cells {
             start[c as usize + 1] += 1;
         }
-        for c in 0..g * g {
+        for c in 0..gx * gy {
             start[c + 1] += start[c];
         }
         let mut fill = start.clone();
@@ -144,96 +170,155 @@ impl Grid {
             ys[*slot as usize] = coord(p.y);
             *slot += 1;
         }
-        Self { g, start, xs, ys }
+        Self {
+            gx,
+            gy,
+            side_x: wx / gx as f64,
+            side_y: wy / gy as f64,
+            start,
+            xs,
+            ys,
+        }
     }
 
     fn cell(&self, c: usize) -> core::ops::Range<usize> {
         self.start[c] as usize..self.start[c + 1] as usize
     }
+
+    /// The cell at grid position `(x, y)`, wrapped on the axes that wrap, or
+    /// `None` off the grid.
+    #[inline]
+    fn neighbour(&self, x: isize, y: isize, wrap: [bool; 2]) -> Option<usize> {
+        let fold = |v: isize, g: usize, wrap: bool| {
+            let g = g as isize;
+            if wrap {
+                Some(v.rem_euclid(g))
+            } else {
+                (0..g).contains(&v).then_some(v)
+            }
+        };
+        let x = fold(x, self.gx, wrap[0])?;
+        let y = fold(y, self.gy, wrap[1])?;
+        Some((y * self.gx as isize + x) as usize)
+    }
 }
 
+/// Squared distance, with the toroidal difference `min(d, 1 - d)` on the
+/// axes that wrap.
 #[inline(always)]
-fn dist2(ax: f64, ay: f64, bx: f64, by: f64, torus: bool) -> f64 {
+fn dist2(ax: f64, ay: f64, bx: f64, by: f64, wrap: [bool; 2]) -> f64 {
     let mut dx = (ax - bx).abs();
     let mut dy = (ay - by).abs();
-    if torus {
+    if wrap[0] {
         dx = dx.min(1.0 - dx);
+    }
+    if wrap[1] {
         dy = dy.min(1.0 - dy);
     }
     dx * dx + dy * dy
 }
 
+/// Margin on cell arithmetic, so that its roundings stay on the safe side.
+const MARGIN: f64 = 1.0 + 1e-9;
+
 /// Squared closest-pair distance (needs at least two points).
 fn closest_pair_squared(points: &[Vec2], torus: bool) -> f64 {
-    let grid = Grid::new(points);
-    let g = grid.g as isize;
-    let side = 1.0 / grid.g as f64;
+    let (mut lo_x, mut lo_y, mut hi_x, mut hi_y) = (1.0f64, 1.0f64, 0.0f64, 0.0f64);
+    for p in points {
+        let (x, y) = (coord(p.x), coord(p.y));
+        (lo_x, hi_x) = (lo_x.min(x), hi_x.max(x));
+        (lo_y, hi_y) = (lo_y.min(y), hi_y.max(y));
+    }
+    let (wx, wy) = (hi_x - lo_x, hi_y - lo_y);
+    // On an axis where the points span no more than 1/2, every difference d
+    // has d <= 1 - d, so the toroidal and plain differences agree bit for bit
+    // and the grid can cover just the points' extent (which keeps clusters
+    // and strips fast). Only wider axes wrap, over all of [0, 1).
+    let wrap = [torus && wx > 0.5, torus && wy > 0.5];
+    let (ox, wx) = if wrap[0] { (0.0, 1.0) } else { (lo_x, wx) };
+    let (oy, wy) = if wrap[1] { (0.0, 1.0) } else { (lo_y, wy) };
+    let bounds = [ox, oy, wx, wy];
+    let grid = Grid::new(points, bounds);
+    let (gx, gy) = (grid.gx as isize, grid.gy as isize);
     let mut best = f64::INFINITY;
 
     // Pass 1: pairs within a cell, and with the four "forward" neighbours
     // (right, and the three above), so each neighbouring pair is seen once.
-    for cy in 0..g {
-        for cx in 0..g {
-            let own = grid.cell((cy * g + cx) as usize);
+    for cy in 0..gy {
+        for cx in 0..gx {
+            let here = (cy * gx + cx) as usize;
+            let own = grid.cell(here);
             for i in own.clone() {
                 for j in i + 1..own.end {
-                    let d = dist2(grid.xs[i], grid.ys[i], grid.xs[j], grid.ys[j], torus);
+                    let d = dist2(grid.xs[i], grid.ys[i], grid.xs[j], grid.ys[j], wrap);
                     best = best.min(d);
+                }
+                if best == 0.0 {
+                    return 0.0;
                 }
             }
             for (ox, oy) in [(1, 0), (-1, 1), (0, 1), (1, 1)] {
-                let Some(other) = neighbour(cx + ox, cy + oy, g, torus) else {
+                let Some(other) = grid.neighbour(cx + ox, cy + oy, wrap) else {
                     continue;
                 };
-                if other == (cy * g + cx) as usize {
+                if other == here {
                     continue;
                 }
                 for i in own.clone() {
                     for j in grid.cell(other) {
-                        let d = dist2(grid.xs[i], grid.ys[i], grid.xs[j], grid.ys[j], torus);
+                        let d = dist2(grid.xs[i], grid.ys[i], grid.xs[j], grid.ys[j], wrap);
                         best = best.min(d);
                     }
                 }
             }
         }
     }
-    // On a torus with fewer than 3 cells a side, forward neighbours wrap onto
-    // each other; the general pass below covers such grids exhaustively.
-    // The margins keep the cell arithmetic's roundings on the safe side.
-    let exhaustive = torus && g < 3;
-    if best * (1.0 + 1e-9) <= side * side && !exhaustive {
+    // Pass 1 suffices when every pair closer than `best` is in neighbouring
+    // cells. On a wrapping axis with fewer than 3 cells, forward neighbours
+    // wrap onto each other, so pass 2 covers such grids exhaustively.
+    let covered = |g: usize, side: f64| g == 1 || best * MARGIN <= side * side;
+    let exhaustive = (wrap[0] && gx < 3) || (wrap[1] && gy < 3);
+    if covered(grid.gx, grid.side_x) && covered(grid.gy, grid.side_y) && !exhaustive {
         return best;
     }
 
-    // Pass 2: every pair closer than `best` lies within `reach` cells.
-    let reach = if best.is_finite() {
-        ((libm::sqrt(best) / side * (1.0 + 1e-9)).ceil() as isize).clamp(1, g)
-    } else {
-        g
+    // Pass 2: every pair closer than `best` lies within `reach` cells per axis.
+    let reach = |g: isize, side: f64| {
+        if g == 1 {
+            0
+        } else if best.is_finite() {
+            ((libm::sqrt(best) / side * MARGIN).ceil() as isize).clamp(1, g)
+        } else {
+            g
+        }
     };
-    for cy in 0..g {
-        for cx in 0..g {
-            let own = grid.cell((cy * g + cx) as usize);
+    let (rx, ry) = (reach(gx, grid.side_x), reach(gy, grid.side_y));
+    // On the torus an axis whose window covers the whole grid is visited once
+    // per cell, not once per wrap.
+    let span = |c: isize, r: isize, g: isize, wrap: bool| {
+        if wrap && 2 * r + 1 >= g {
+            0..g
+        } else {
+            c - r..c + r + 1
+        }
+    };
+    for cy in 0..gy {
+        for cx in 0..gx {
+            let own = grid.cell((cy * gx + cx) as usize);
             if own.is_empty() {
                 continue;
             }
-            let mut visit = |other: usize| {
-                for i in own.clone() {
-                    for j in grid.cell(other) {
-                        if i != j {
-                            let d = dist2(grid.xs[i], grid.ys[i], grid.xs[j], grid.ys[j], torus);
-                            best = best.min(d);
-                        }
-                    }
-                }
-            };
-            if torus && 2 * reach + 1 >= g {
-                (0..(g * g) as usize).for_each(&mut visit);
-            } else {
-                for oy in -reach..=reach {
-                    for ox in -reach..=reach {
-                        if let Some(other) = neighbour(cx + ox, cy + oy, g, torus) {
-                            visit(other);
+            for y in span(cy, ry, gy, wrap[1]) {
+                for x in span(cx, rx, gx, wrap[0]) {
+                    let Some(other) = grid.neighbour(x, y, wrap) else {
+                        continue;
+                    };
+                    for i in own.clone() {
+                        for j in grid.cell(other) {
+                            if i != j {
+                                let d = dist2(grid.xs[i], grid.ys[i], grid.xs[j], grid.ys[j], wrap);
+                                best = best.min(d);
+                            }
                         }
                     }
                 }
@@ -241,19 +326,6 @@ fn closest_pair_squared(points: &[Vec2], torus: bool) -> f64 {
         }
     }
     best
-}
-
-/// The cell at grid position `(x, y)`, wrapped on the torus, or `None` off
-/// the square.
-#[inline]
-fn neighbour(x: isize, y: isize, g: isize, torus: bool) -> Option<usize> {
-    if torus {
-        Some((y.rem_euclid(g) * g + x.rem_euclid(g)) as usize)
-    } else if (0..g).contains(&x) && (0..g).contains(&y) {
-        Some((y * g + x) as usize)
-    } else {
-        None
-    }
 }
 
 #[cfg(test)]
