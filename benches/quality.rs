@@ -23,6 +23,7 @@ use std::time::Instant;
 
 use wellspread::glam::Vec2;
 use wellspread::hash::pattern_seed;
+use wellspread::metrics;
 use wellspread::{AnySampler, Sampler2D, SamplerKind};
 
 /// How big a run is.
@@ -116,9 +117,14 @@ fn sq(v: f32) -> f64 {
 /// A metric from `wellspread::metrics`.
 type Metric = fn(&[Vec2]) -> Result<f64, wellspread::Error>;
 
-// The metrics module lands on main separately; until it is merged here the
-// table is empty and the report has no metric sections.
-const METRICS: [(&str, Metric); 0] = [];
+const METRICS: [(&str, Metric); 3] = [
+    ("star discrepancy", metrics::star_discrepancy),
+    ("L2-star discrepancy", metrics::l2_star_discrepancy),
+    (
+        "normalised toroidal minimum distance",
+        metrics::normalized_toroidal_min_distance,
+    ),
+];
 
 /// The pattern for repetition `r` of a set of `n`: distinct across n too.
 fn pattern(r: u32, n: u32) -> u32 {

@@ -30,6 +30,51 @@ pub enum Error {
         /// Why the limit exists.
         reason: &'static str,
     },
+    /// A metric was given no points.
+    EmptyPointSet,
+    /// A metric was given a point with a NaN or infinite coordinate.
+    NonFinitePoint {
+        /// Index of the first such point in the slice.
+        index: usize,
+        /// Its x coordinate.
+        x: f32,
+        /// Its y coordinate.
+        y: f32,
+    },
+    /// A metric was given a point outside `[0, 1)^2` (1.0 and negative values
+    /// included; `-0.0` counts as `0.0` and is accepted).
+    PointOutOfRange {
+        /// Index of the first such point in the slice.
+        index: usize,
+        /// Its x coordinate.
+        x: f32,
+        /// Its y coordinate.
+        y: f32,
+    },
+    /// A metric needs more points than it was given (a distance needs a pair).
+    TooFewPoints {
+        /// The metric, as the tools spell it.
+        metric: &'static str,
+        /// The fewest points it accepts.
+        needed: usize,
+        /// How many it got.
+        got: usize,
+    },
+    /// A stratification check was asked for a grid whose cell count does not
+    /// divide the number of points.
+    GridDoesNotDivide {
+        /// Columns asked for.
+        columns: u32,
+        /// Rows asked for.
+        rows: u32,
+        /// Number of points.
+        n: usize,
+    },
+    /// A check that needs `n = 2^m` points got another count.
+    NotPowerOfTwo {
+        /// Number of points.
+        n: usize,
+    },
 }
 
 impl fmt::Display for Error {
@@ -48,6 +93,38 @@ impl fmt::Display for Error {
             } => write!(
                 f,
                 "{sampler} accepts at most {max} samples, got {requested}: {reason}"
+            ),
+            Error::EmptyPointSet => {
+                f.write_str("a metric needs at least one point; got an empty set")
+            }
+            Error::NonFinitePoint { index, x, y } => write!(
+                f,
+                "point {index} is ({x}, {y}), which is not finite; \
+                 metrics need coordinates in [0, 1)"
+            ),
+            Error::PointOutOfRange { index, x, y } => write!(
+                f,
+                "point {index} is ({x}, {y}), outside [0, 1)^2; \
+                 wrap or clamp coordinates into [0, 1) before measuring"
+            ),
+            Error::TooFewPoints {
+                metric,
+                needed,
+                got,
+            } => write!(
+                f,
+                "{metric} needs at least {needed} points, got {got}; pass a larger set"
+            ),
+            Error::GridDoesNotDivide { columns, rows, n } => write!(
+                f,
+                "a {columns} x {rows} grid has {} cells, which does not divide n = {n}; \
+                 pick columns and rows whose product divides the number of points",
+                u64::from(columns) * u64::from(rows)
+            ),
+            Error::NotPowerOfTwo { n } => write!(
+                f,
+                "a (0,m,2)-net check needs n = 2^m points, got n = {n}; \
+                 measure a power-of-two prefix"
             ),
         }
     }

@@ -32,6 +32,9 @@
 //!
 //! - `std` (default): the standard library; implies `alloc`.
 //! - `alloc` (default through `std`): heap allocation for the metrics.
+//! - `rayon` (off): runs the quadratic metric (the wrap-around L2
+//!   discrepancy) on rayon's thread pool; results do not depend on the
+//!   thread count.
 //!
 //! With neither, the crate is `no_std` and the samplers and hashes still
 //! work. No feature changes a sample value.

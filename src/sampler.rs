@@ -32,9 +32,12 @@ pub trait Sampler2D {
 
     /// Sample `index` of pattern `pattern`, in O(1).
     ///
-    /// `index` must be below [`len`](Sampler2D::len) (checked in debug
-    /// builds). Each sampler documents what a release build returns for a
-    /// larger index; it is always a point in `[0, 1)^2`.
+    /// For a fixed-size set, `index` must be below [`len`](Sampler2D::len)
+    /// (checked in debug builds); each sampler documents what a release build
+    /// returns for a larger index, and it is always a point in `[0, 1)^2`.
+    /// The progressive sequences ([`Sobol`](crate::Sobol),
+    /// [`Pmj02`](crate::Pmj02), [`Halton`](crate::Halton)) accept every
+    /// `u32` index: their `len` is only the set size `fill` and the tools use.
     fn sample(&self, index: u32, pattern: u32) -> Vec2;
 
     /// Writes samples `0..out.len()` of pattern `pattern` into `out`: exactly

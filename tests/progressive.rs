@@ -12,55 +12,25 @@
 
 use proptest::prelude::*;
 use wellspread::glam::Vec2;
+use wellspread::metrics;
 use wellspread::{Error, Halton, Hammersley, Pmj02, Random, Sampler2D, SamplerKind, Sobol};
 
 /// Proptest cases per sampler for the prefix-net properties.
 const NET_CASES: u32 = 48;
 
 /// `true` if `points` (a power-of-two count `2^m`) is a (0,m,2)-net in base
-/// 2: every box `2^-a x 2^-(m-a)`, for every `a` in `0..=m`, holds exactly
-/// one point. Cells are found exactly on the f32 values (scaling by a power
-/// of two is exact, and coordinates are below 1).
-///
-/// TODO(lead): switch to `wellspread::metrics::is_net_base2` once the
-/// metrics branch is merged.
+/// 2, by the crate's metric (itself checked against brute force in
+/// `tests/metrics.rs`). Invalid input (a coordinate outside `[0, 1)`, a count
+/// that is not a power of two) fails the test.
 fn is_net_base2(points: &[Vec2]) -> bool {
-    let n = points.len();
-    assert!(n.is_power_of_two());
-    let m = n.trailing_zeros();
-    let mut seen = vec![false; n];
-    for a in 0..=m {
-        seen.fill(false);
-        for p in points {
-            assert!((0.0..1.0).contains(&p.x) && (0.0..1.0).contains(&p.y));
-            let column = (p.x * (1u64 << a) as f32) as usize;
-            let row = (p.y * (1u64 << (m - a)) as f32) as usize;
-            let cell = (column << (m - a)) | row;
-            if seen[cell] {
-                return false;
-            }
-            seen[cell] = true;
-        }
-    }
-    true
+    metrics::is_net_base2(points).expect("a power-of-two set of points in [0, 1)^2")
 }
 
 /// `true` if `points` has exactly one point in each cell of a
 /// `columns x rows` grid (`columns * rows == points.len()`).
 fn is_stratified(points: &[Vec2], columns: u32, rows: u32) -> bool {
     assert_eq!(points.len(), (columns * rows) as usize);
-    let mut seen = vec![false; points.len()];
-    for p in points {
-        // f64 products are exact for f32 inputs and these grid sizes.
-        let column = (p.x as f64 * columns as f64) as u32;
-        let row = (p.y as f64 * rows as f64) as u32;
-        let cell = (row * columns + column) as usize;
-        if seen[cell] {
-            return false;
-        }
-        seen[cell] = true;
-    }
-    true
+    metrics::is_stratified(points, columns, rows).expect("points in [0, 1)^2 on a dividing grid")
 }
 
 fn points(sampler: &impl Sampler2D, indices: core::ops::Range<u32>, pattern: u32) -> Vec<Vec2> {

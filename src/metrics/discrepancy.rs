@@ -1,0 +1,720 @@
+//! Star discrepancy (exact) and the L2 discrepancies (Warnock's L2-star,
+//! Hickernell's centred and wrap-around).
+
+use alloc::vec;
+use alloc::vec::Vec;
+
+use glam::Vec2;
+
+use super::{Sum, coord, validate};
+use crate::Error;
+
+/// Exact star discrepancy of a 2D point set: the largest difference, over all
+/// boxes anchored at the origin, between the fraction of points inside and the
+/// box's area,
+///
+/// `D* = sup over a, b in [0, 1] of |#{i : x_i < a, y_i < b} / n - a b|`,
+///
+/// with open boxes `[0, a) x [0, b)` and closed boxes `[0, a] x [0, b]` both
+/// considered (the supremum over half-open boxes is reached in the limit by one
+/// or the other).
+///
+/// # Algorithm
+///
+/// The supremum is attained at critical boxes: open boxes whose right and top
+/// edges lie on point coordinates or on 1 (too few points: `a b - count / n`),
+/// and closed boxes whose edges lie on point coordinates (too many points:
+/// `count / n - a b`). For a fixed right edge `a`, each candidate top edge
+/// `b_j` is a line in `a` with slope `b_j` (or `-b_j`) and an intercept that
+/// counts the points already swept. The sweep goes over the distinct x values
+/// in increasing order; a point entering the sweep adds 1 to the intercepts of
+/// a contiguous range of `b_j`, and the answer for each `a` is the upper
+/// envelope of the lines at `a`, with `a` only growing.
+///
+/// Both operations run on a kinetic segment tree (a kinetic tournament in the
+/// sense of Basch, Guibas & Hershberger 1999, with lazy range updates) over
+/// the `b_j` sorted by slope: each node keeps the line that wins in its
+/// subtree at the current `a` and the earliest `a` at which that can change
+/// (when a steeper line from its right half overtakes). A range update is a
+/// lazy intercept shift (it does not change the winners inside a covered
+/// subtree) plus a re-evaluation of O(log n) ancestors; advancing `a`
+/// re-evaluates only nodes whose certificate expired. The amortised bound
+/// known for kinetic segment trees is O(log² n) per update, i.e. O(n log² n)
+/// time in all, with O(n) memory; the measured scaling agrees (2^16 to 2^20
+/// points: 25 to 28 times the time for 16 times the points; n log² n predicts 25).
+/// The leaves are buckets of 32 lines that keep their own upper hull, which
+/// keeps the tree small enough for the cache. Measured: about 0.11 s at
+/// n = 2^16 and 3.0 s at n = 2^20 on one core of a shared 2-core machine, for
+/// uniform random points; structured sets (grids, diagonals, Hammersley) take
+/// no longer. Results are exact up to one f64 rounding per candidate box.
+///
+/// Dobkin, Eppstein & Mitchell 1996 give the classic O(n²) 2D algorithm (and
+/// the critical-box argument); the kinetic tree replaces their per-column scan.
+///
+/// # Errors
+///
+/// [`Error::EmptyPointSet`], [`Error::NonFinitePoint`] or
+/// [`Error::PointOutOfRange`] (naming the first bad point). `-0.0` counts as 0.
+///
+/// # Examples
+///
+/// ```
+/// use wellspread::{glam::Vec2, metrics::star_discrepancy};
+/// // One point: D* = max(1 - xy, x, y).
+/// let d = star_discrepancy(&[Vec2::new(0.5, 0.25)])?;
+/// assert!((d - 0.875).abs() < 1e-12);
+/// // Centred 4 x 4 grid: 1/8 + 1/8 - 1/64.
+/// let grid: Vec<Vec2> = (0..16)
+///     .map(|i| Vec2::new((i % 4) as f32 / 4.0 + 0.125, (i / 4) as f32 / 4.0 + 0.125))
+///     .collect();
+/// assert!((star_discrepancy(&grid)? - (0.25 - 1.0 / 64.0)).abs() < 1e-12);
+/// # Ok::<(), wellspread::Error>(())
+/// ```
+pub fn star_discrepancy(points: &[Vec2]) -> Result<f64, Error> {
+    validate(points)?;
+    let n = points.len();
+    let nf = n as f64;
+
+    // Distinct y values sorted, and each point as (x, rank of its y), sorted
+    // by x. Ranks come from one sort rather than a search per point.
+    let mut by_y: Vec<(f64, f64)> = points.iter().map(|p| (coord(p.y), coord(p.x))).collect();
+    by_y.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
+    let mut ys: Vec<f64> = Vec::with_capacity(n);
+    let mut pts: Vec<(f64, u32)> = Vec::with_capacity(n);
+    for &(y, x) in &by_y {
+        if ys.last() != Some(&y) {
+            ys.push(y);
+        }
+        pts.push((x, (ys.len() - 1) as u32));
+    }
+    drop(by_y);
+    pts.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
+    let m = ys.len();
+
+    // Too few points (open boxes): for each top edge b_j in ys and 1, the line
+    // n a b_j - #{x < a, y < b_j}. A point with y rank r lowers slots r+1..=m.
+    let mut best_open = f64::NEG_INFINITY;
+    {
+        let slopes: Vec<f64> = ys.iter().chain(&[1.0]).map(|&b| nf * b).collect();
+        let mut tree = Kinetic::new(slopes);
+        let mut i = 0;
+        while i < n {
+            let a = pts[i].0;
+            tree.advance(a);
+            best_open = best_open.max(tree.max_at(a));
+            while i < n && pts[i].0 == a {
+                tree.add(pts[i].1 as usize + 1, m + 1, -1.0, a);
+                i += 1;
+            }
+        }
+        tree.advance(1.0);
+        best_open = best_open.max(tree.max_at(1.0));
+    }
+
+    // Too many points (closed boxes): for each top edge b_j in ys, the line
+    // #{x <= a, y <= b_j} - n a b_j. Slots are stored in decreasing b (so the
+    // slopes -n b increase); a point with y rank r raises b_r.. = slots 0..m-r.
+    let mut best_closed = f64::NEG_INFINITY;
+    {
+        let slopes: Vec<f64> = ys.iter().rev().map(|&b| -nf * b).collect();
+        let mut tree = Kinetic::new(slopes);
+        let mut i = 0;
+        while i < n {
+            let a = pts[i].0;
+            tree.advance(a);
+            while i < n && pts[i].0 == a {
+                tree.add(0, m - pts[i].1 as usize, 1.0, a);
+                i += 1;
+            }
+            tree.advance(a);
+            best_closed = best_closed.max(tree.max_at(a));
+        }
+    }
+
+    Ok((best_open.max(best_closed) / nf).max(0.0))
+}
+
+/// One node of the kinetic tree: the winning line of its subtree at the
+/// current time, the time its win may end, and a pending intercept shift for
+/// its children (for a leaf: the shift shared by its whole bucket).
+#[derive(Clone, Copy, Debug)]
+struct Node {
+    /// Intercept of the winning line (all shifts at and below this node applied).
+    intercept: f64,
+    /// Earliest time at which some winner in this subtree may change.
+    melt: f64,
+    /// Shift still to be passed to the children; in a leaf, the bucket's
+    /// shift (an integer count, exact in f64).
+    lazy: f64,
+    /// Slope of the winning line (kept here so that comparing children
+    /// touches only the nodes).
+    slope: f64,
+}
+
+/// Lines per leaf bucket. A bucket keeps the upper hull of its lines and a
+/// pointer that only moves forward in time; rebuilding it after a partial
+/// update costs O(BUCKET). Buckets cut the tree (and its cache misses) by
+/// this factor.
+const BUCKET: usize = 32;
+
+/// Kinetic segment tree for the upper envelope of lines `slope[j] t + c_j`,
+/// with range updates of the intercepts and a time `t` that only grows.
+///
+/// Leaves are buckets of [`BUCKET`] consecutive lines. Nodes are laid out in
+/// DFS order: the node for buckets `[lo, hi)` at `v` has its left child at
+/// `v + 1` and its right child at `v + 2 (mid - lo)`, so the tree uses exactly
+/// `2 buckets - 1` nodes.
+#[derive(Debug)]
+struct Kinetic {
+    /// Per line, strictly increasing.
+    slope: Vec<f64>,
+    /// Per line: the intercept without its bucket's shift.
+    raw: Vec<f64>,
+    /// Per bucket `b`: its upper hull in `hull[b BUCKET..][..hull_len[b]]`.
+    hull: Vec<u32>,
+    hull_len: Vec<u32>,
+    /// Per bucket: the hull entry that wins at the current time.
+    ptr: Vec<u32>,
+    nodes: Vec<Node>,
+}
+
+impl Kinetic {
+    /// Lines with the given slopes (strictly increasing) and zero intercepts, at time 0.
+    fn new(slope: Vec<f64>) -> Self {
+        debug_assert!(slope.windows(2).all(|w| w[0] < w[1]));
+        let len = slope.len();
+        let buckets = len.div_ceil(BUCKET);
+        let leaf = Node {
+            intercept: 0.0,
+            melt: f64::INFINITY,
+            lazy: 0.0,
+            slope: 0.0,
+        };
+        let mut tree = Self {
+            slope,
+            raw: vec![0.0; len],
+            hull: vec![0; len],
+            hull_len: vec![0; buckets],
+            ptr: vec![0; buckets],
+            nodes: vec![leaf; 2 * buckets - 1],
+        };
+        tree.build(0, 0, buckets);
+        tree
+    }
+
+    fn buckets(&self) -> usize {
+        self.hull_len.len()
+    }
+
+    /// Slots of bucket `b`.
+    fn slots(&self, b: usize) -> core::ops::Range<usize> {
+        b * BUCKET..((b + 1) * BUCKET).min(self.slope.len())
+    }
+
+    fn build(&mut self, v: usize, lo: usize, hi: usize) {
+        if hi - lo == 1 {
+            self.rebuild_hull(lo);
+            self.eval_leaf(v, lo, 0.0);
+            return;
+        }
+        let mid = (lo + hi) / 2;
+        let (left, right) = (v + 1, v + 2 * (mid - lo));
+        self.build(left, lo, mid);
+        self.build(right, mid, hi);
+        self.pull(v, left, right, 0.0);
+    }
+
+    /// Upper hull of bucket `b`'s lines (monotone chain; slopes are sorted).
+    fn rebuild_hull(&mut self, b: usize) {
+        let slots = self.slots(b);
+        let base = slots.start;
+        let mut len = 0usize;
+        for j in slots {
+            let (sl, cl) = (self.slope[j], self.raw[j]);
+            while len >= 2 {
+                let (i1, i2) = (
+                    self.hull[base + len - 2] as usize,
+                    self.hull[base + len - 1] as usize,
+                );
+                let (s1, c1, s2, c2) = (self.slope[i1], self.raw[i1], self.slope[i2], self.raw[i2]);
+                // Line 2 never wins if line l overtakes it no later than it
+                // overtakes line 1.
+                if (c1 - c2) * (sl - s2) >= (c2 - cl) * (s2 - s1) {
+                    len -= 1;
+                } else {
+                    break;
+                }
+            }
+            self.hull[base + len] = j as u32;
+            len += 1;
+        }
+        self.hull_len[b] = len as u32;
+        self.ptr[b] = 0;
+    }
+
+    /// Moves bucket `b`'s pointer to time `t` and stores its winner in leaf `v`.
+    #[inline]
+    fn eval_leaf(&mut self, v: usize, b: usize, t: f64) {
+        let base = b * BUCKET;
+        let len = self.hull_len[b] as usize;
+        let mut p = self.ptr[b] as usize;
+        let value = |j: u32| self.slope[j as usize] * t + self.raw[j as usize];
+        let mut current = value(self.hull[base + p]);
+        while p + 1 < len {
+            let next = value(self.hull[base + p + 1]);
+            if next < current {
+                break;
+            }
+            current = next;
+            p += 1;
+        }
+        self.ptr[b] = p as u32;
+        let w = self.hull[base + p] as usize;
+        let melt = if p + 1 < len {
+            let n = self.hull[base + p + 1] as usize;
+            (self.raw[w] - self.raw[n]) / (self.slope[n] - self.slope[w])
+        } else {
+            f64::INFINITY
+        };
+        let node = &mut self.nodes[v];
+        node.slope = self.slope[w];
+        node.intercept = self.raw[w] + node.lazy;
+        node.melt = melt;
+    }
+
+    /// Recomputes node `v`'s winner and certificate from its children at time `t`.
+    #[inline]
+    fn pull(&mut self, v: usize, left: usize, right: usize, t: f64) {
+        let (l, r) = (self.nodes[left], self.nodes[right]);
+        let (sl, sr) = (l.slope, r.slope);
+        let (vl, vr) = (sl * t + l.intercept, sr * t + r.intercept);
+        let mut melt = l.melt.min(r.melt);
+        let node = &mut self.nodes[v];
+        // The right child's lines are all steeper: once it wins it keeps
+        // winning as t grows; while the left wins, the right overtakes at `cross`.
+        if vl > vr {
+            let cross = (l.intercept - r.intercept) / (sr - sl);
+            if cross > t {
+                melt = melt.min(cross);
+                node.slope = sl;
+                node.intercept = l.intercept;
+                node.melt = melt;
+                return;
+            }
+        }
+        node.slope = sr;
+        node.intercept = r.intercept;
+        node.melt = melt;
+    }
+
+    #[inline]
+    fn push(&mut self, v: usize, left: usize, right: usize) {
+        let lazy = self.nodes[v].lazy;
+        if lazy != 0.0 {
+            for child in [left, right] {
+                self.nodes[child].intercept += lazy;
+                self.nodes[child].lazy += lazy;
+            }
+            self.nodes[v].lazy = 0.0;
+        }
+    }
+
+    /// Adds `delta` (±1) to the intercepts of lines `lo..hi`, at time `t`
+    /// (the tree must already be advanced to `t`).
+    fn add(&mut self, lo: usize, hi: usize, delta: f64, t: f64) {
+        if lo < hi {
+            self.add_in(0, 0, self.buckets(), (lo, hi), delta, t);
+        }
+    }
+
+    fn add_in(&mut self, v: usize, lo: usize, hi: usize, range: (usize, usize), d: f64, t: f64) {
+        let (first, end) = (lo * BUCKET, (hi * BUCKET).min(self.slope.len()));
+        let (ql, qr) = range;
+        if qr <= first || end <= ql {
+            return;
+        }
+        if ql <= first && end <= qr {
+            // A uniform shift keeps every winner inside the subtree.
+            self.nodes[v].intercept += d;
+            self.nodes[v].lazy += d;
+            return;
+        }
+        if hi - lo == 1 {
+            for c in &mut self.raw[ql.max(first)..qr.min(end)] {
+                *c += d;
+            }
+            self.rebuild_hull(lo);
+            self.eval_leaf(v, lo, t);
+            return;
+        }
+        let mid = (lo + hi) / 2;
+        let (left, right) = (v + 1, v + 2 * (mid - lo));
+        self.push(v, left, right);
+        self.add_in(left, lo, mid, range, d, t);
+        self.add_in(right, mid, hi, range, d, t);
+        self.pull(v, left, right, t);
+    }
+
+    /// Moves time forward to `t`, re-evaluating the nodes whose winner may
+    /// have changed.
+    fn advance(&mut self, t: f64) {
+        self.advance_in(0, 0, self.buckets(), t);
+    }
+
+    fn advance_in(&mut self, v: usize, lo: usize, hi: usize, t: f64) {
+        if self.nodes[v].melt > t {
+            return;
+        }
+        if hi - lo == 1 {
+            self.eval_leaf(v, lo, t);
+            return;
+        }
+        let mid = (lo + hi) / 2;
+        let (left, right) = (v + 1, v + 2 * (mid - lo));
+        self.push(v, left, right);
+        self.advance_in(left, lo, mid, t);
+        self.advance_in(right, mid, hi, t);
+        self.pull(v, left, right, t);
+    }
+
+    /// The upper envelope at time `t` (the tree must be advanced to `t`).
+    fn max_at(&self, t: f64) -> f64 {
+        let root = self.nodes[0];
+        root.slope * t + root.intercept
+    }
+}
+
+/// L2-star discrepancy (Warnock 1972): the root mean square of the local
+/// discrepancy over all anchored boxes,
+///
+/// `T² = ∫∫ (#{x_i < a, y_i < b} / n - a b)² da db
+///     = 1/9 - 1/(2n) Σ_i (1 - x_i²)(1 - y_i²)
+///       + 1/n² Σ_i Σ_j (1 - max(x_i, x_j))(1 - max(y_i, y_j))`.
+///
+/// Returns `T` itself, as `scipy.stats.qmc.discrepancy(method="L2-star")` does.
+///
+/// # Algorithm
+///
+/// The double sum is `Σ min(1 - x_i, 1 - x_j) min(1 - y_i, 1 - y_j)`: a sweep in
+/// decreasing `1 - x` with a Fenwick tree over the ranks of `1 - y` (counts and
+/// compensated sums) evaluates it in O(n log n) time and O(n) memory, the 2D
+/// case of Heinrich's 1996 algorithm. The three terms nearly cancel; they are
+/// summed with compensation, so the absolute error of `T²` stays near 1e-16
+/// and the relative error of `T` near `1e-16 / T²`.
+///
+/// # Errors
+///
+/// As [`star_discrepancy`].
+///
+/// # Examples
+///
+/// ```
+/// use wellspread::{glam::Vec2, metrics::l2_star_discrepancy};
+/// // One point at the origin: T² = 1/9 - 1/2 + 1 = 11/18.
+/// let t = l2_star_discrepancy(&[Vec2::ZERO])?;
+/// assert!((t - (11.0f64 / 18.0).sqrt()).abs() < 1e-15);
+/// # Ok::<(), wellspread::Error>(())
+/// ```
+pub fn l2_star_discrepancy(points: &[Vec2]) -> Result<f64, Error> {
+    validate(points)?;
+    let nf = points.len() as f64;
+    let mut single = Sum::default();
+    let mut p = Vec::with_capacity(points.len());
+    let mut q = Vec::with_capacity(points.len());
+    for pt in points {
+        let (x, y) = (coord(pt.x), coord(pt.y));
+        single.add((1.0 - x * x) * (1.0 - y * y));
+        p.push(1.0 - x);
+        q.push(1.0 - y);
+    }
+    let pairs = sum_min_min(&p, &q);
+    let mut total = Sum::default();
+    total.add(1.0 / 9.0);
+    total.add(-single.value() / (2.0 * nf));
+    total.add(pairs / (nf * nf));
+    Ok(total.value().max(0.0).sqrt())
+}
+
+/// Centred L2 discrepancy (Hickernell 1998), with `u = x - 1/2`:
+///
+/// `CD² = (13/12)² - 2/n Σ_i Π_k (1 + |u_ik|/2 - u_ik²/2)
+///        + 1/n² Σ_i Σ_j Π_k (1 + |u_ik|/2 + |u_jk|/2 - |x_ik - x_jk|/2)`.
+///
+/// Returns `CD` itself. Note that `scipy.stats.qmc.discrepancy(method="CD")`
+/// returns `CD²` (scipy issue 19839); square this value to compare.
+///
+/// # Algorithm
+///
+/// Each pair factor is `1 + min(|u_i|, |u_j|)` when both points lie on the same
+/// side of 1/2 and 1 otherwise, so the double sum splits into 1D sums over
+/// each half and 2D sums of `min · min` over each quadrant, each evaluated by
+/// a sorted sweep with a Fenwick tree: O(n log n) time, O(n) memory,
+/// compensated sums.
+///
+/// # Errors
+///
+/// As [`star_discrepancy`].
+///
+/// # Examples
+///
+/// ```
+/// use wellspread::{glam::Vec2, metrics::centered_l2_discrepancy};
+/// // One point at the centre: CD² = (13/12)² - 2 + 1.
+/// let cd = centered_l2_discrepancy(&[Vec2::splat(0.5)])?;
+/// assert!((cd - (169.0f64 / 144.0 - 1.0).sqrt()).abs() < 1e-15);
+/// # Ok::<(), wellspread::Error>(())
+/// ```
+pub fn centered_l2_discrepancy(points: &[Vec2]) -> Result<f64, Error> {
+    validate(points)?;
+    let nf = points.len() as f64;
+    // Factors written as 1 + g, so the constants cancel exactly up front:
+    // (13/12)² - 2 + 1 = 25/144.
+    let mut single = Sum::default();
+    // |u| per point, grouped by side in x, in y, and by quadrant.
+    let mut halves_x: [Vec<f64>; 2] = [Vec::new(), Vec::new()];
+    let mut halves_y: [Vec<f64>; 2] = [Vec::new(), Vec::new()];
+    let mut quadrants: [(Vec<f64>, Vec<f64>); 4] = Default::default();
+    for pt in points {
+        let (ux, uy) = (coord(pt.x) - 0.5, coord(pt.y) - 0.5);
+        let (ax, ay) = (ux.abs(), uy.abs());
+        let gx = 0.5 * ax - 0.5 * ux * ux;
+        let gy = 0.5 * ay - 0.5 * uy * uy;
+        single.add(gx + gy + gx * gy);
+        let (sx, sy) = (usize::from(ux >= 0.0), usize::from(uy >= 0.0));
+        halves_x[sx].push(ax);
+        halves_y[sy].push(ay);
+        let quadrant = &mut quadrants[2 * sx + sy];
+        quadrant.0.push(ax);
+        quadrant.1.push(ay);
+    }
+    let mut pairs = Sum::default();
+    for half in halves_x.iter_mut().chain(halves_y.iter_mut()) {
+        pairs.add(sum_min_1d(half));
+    }
+    for (p, q) in &quadrants {
+        pairs.add(sum_min_min(p, q));
+    }
+    let mut total = Sum::default();
+    total.add(25.0 / 144.0);
+    total.add(-2.0 * single.value() / nf);
+    total.add(pairs.value() / (nf * nf));
+    Ok(total.value().max(0.0).sqrt())
+}
+
+/// Wrap-around L2 discrepancy (Hickernell 1998): the L2 discrepancy over all
+/// boxes of the torus,
+///
+/// `WD² = -(4/3)² + 1/n² Σ_i Σ_j Π_k (3/2 - |x_ik - x_jk| (1 - |x_ik - x_jk|))`.
+///
+/// Returns `WD` itself. Note that `scipy.stats.qmc.discrepancy(method="WD")`
+/// returns `WD²` (scipy issue 19839); square this value to compare.
+///
+/// # Algorithm
+///
+/// The direct double sum over the n(n-1)/2 pairs, with `(4/3)²` subtracted
+/// from every term so the partial sums stay small, in a vectorisable inner
+/// loop: O(n²) time, O(1) extra memory. Rows are summed in fixed chunks of 64
+/// and the chunk sums added in order with compensation; with the `rayon`
+/// feature the chunks run in parallel, and the result is bit-for-bit the same
+/// for any number of threads (and without `rayon`).
+///
+/// # Errors
+///
+/// As [`star_discrepancy`].
+///
+/// # Examples
+///
+/// ```
+/// use wellspread::{glam::Vec2, metrics::wraparound_l2_discrepancy};
+/// // One point: WD² = (3/2)² - (4/3)² = 17/36.
+/// let wd = wraparound_l2_discrepancy(&[Vec2::new(0.3, 0.9)])?;
+/// assert!((wd - (17.0f64 / 36.0).sqrt()).abs() < 1e-15);
+/// # Ok::<(), wellspread::Error>(())
+/// ```
+pub fn wraparound_l2_discrepancy(points: &[Vec2]) -> Result<f64, Error> {
+    validate(points)?;
+    let n = points.len();
+    let nf = n as f64;
+    let xs: Vec<f64> = points.iter().map(|p| coord(p.x)).collect();
+    let ys: Vec<f64> = points.iter().map(|p| coord(p.y)).collect();
+    const ROWS: usize = 64;
+    let chunks = n.div_ceil(ROWS);
+    let chunk_sum = |c: usize| {
+        let mut s = Sum::default();
+        for i in c * ROWS..((c + 1) * ROWS).min(n) {
+            s.add(wraparound_row(&xs, &ys, i));
+        }
+        s.value()
+    };
+    #[cfg(feature = "rayon")]
+    let sums: Vec<f64> = {
+        use rayon::prelude::*;
+        (0..chunks).into_par_iter().map(chunk_sum).collect()
+    };
+    #[cfg(not(feature = "rayon"))]
+    let sums: Vec<f64> = (0..chunks).map(chunk_sum).collect();
+    let mut off_diagonal = Sum::default();
+    for s in sums {
+        off_diagonal.add(s);
+    }
+    // Diagonal: (3/2)² - (4/3)² = 17/36 per point.
+    let mut total = Sum::default();
+    total.add(17.0 / 36.0 * nf);
+    total.add(2.0 * off_diagonal.value());
+    Ok((total.value() / (nf * nf)).max(0.0).sqrt())
+}
+
+/// `Σ_{j > i} (f(dx) f(dy) - 16/9)` with `f(d) = 3/2 - d (1 - d)`.
+#[inline]
+fn wraparound_row(xs: &[f64], ys: &[f64], i: usize) -> f64 {
+    const MEAN: f64 = 16.0 / 9.0;
+    #[inline(always)]
+    fn term(xi: f64, yi: f64, xj: f64, yj: f64) -> f64 {
+        let dx = (xi - xj).abs();
+        let dy = (yi - yj).abs();
+        (1.5 - dx * (1.0 - dx)) * (1.5 - dy * (1.0 - dy)) - MEAN
+    }
+    let (xi, yi) = (xs[i], ys[i]);
+    let (rx, ry) = (&xs[i + 1..], &ys[i + 1..]);
+    // Blocks of 64 terms are summed in four plain lanes (vectorisable, and the
+    // partial sums stay below 32); the block sums are added with compensation.
+    const BLOCK: usize = 64;
+    let mut row = Sum::default();
+    let (bx, by) = (rx.chunks(BLOCK), ry.chunks(BLOCK));
+    for (cx, cy) in bx.zip(by) {
+        let mut lanes = [0.0f64; 4];
+        let (qx, qy) = (cx.chunks_exact(4), cy.chunks_exact(4));
+        let (tail_x, tail_y) = (qx.remainder(), qy.remainder());
+        for (ax, ay) in qx.zip(qy) {
+            for l in 0..4 {
+                lanes[l] += term(xi, yi, ax[l], ay[l]);
+            }
+        }
+        for (&xj, &yj) in tail_x.iter().zip(tail_y) {
+            lanes[0] += term(xi, yi, xj, yj);
+        }
+        row.add((lanes[0] + lanes[1]) + (lanes[2] + lanes[3]));
+    }
+    row.value()
+}
+
+/// `Σ_i Σ_j min(p_i, p_j)` over all ordered pairs (the diagonal included);
+/// sorts `p`.
+fn sum_min_1d(p: &mut [f64]) -> f64 {
+    // In decreasing order the k-th value is the minimum of 2k + 1 ordered pairs.
+    p.sort_unstable_by(|a, b| b.total_cmp(a));
+    let mut s = Sum::default();
+    for (k, &v) in p.iter().enumerate() {
+        s.add(v * (2 * k + 1) as f64);
+    }
+    s.value()
+}
+
+/// `Σ_i Σ_j min(p_i, p_j) min(q_i, q_j)` over all ordered pairs (the diagonal
+/// included), in O(n log n).
+///
+/// Points are swept in decreasing `p`, so every earlier point has the larger
+/// `p`; a Fenwick tree over the ranks of `q` returns how many earlier points
+/// have a larger `q` (each contributes `q_i`) and the sum of the smaller ones.
+fn sum_min_min(p: &[f64], q: &[f64]) -> f64 {
+    let n = p.len();
+    if n == 0 {
+        return 0.0;
+    }
+    let mut by_q: Vec<u32> = (0..n as u32).collect();
+    by_q.sort_unstable_by(|&a, &b| q[a as usize].total_cmp(&q[b as usize]));
+    let mut rank = vec![0u32; n];
+    for (r, &i) in by_q.iter().enumerate() {
+        rank[i as usize] = r as u32;
+    }
+    let mut by_p: Vec<u32> = (0..n as u32).collect();
+    by_p.sort_unstable_by(|&a, &b| p[b as usize].total_cmp(&p[a as usize]));
+
+    let mut counts = vec![0u32; n + 1];
+    let mut sums = vec![Sum::default(); n + 1];
+    let mut off = Sum::default();
+    let mut diagonal = Sum::default();
+    for (seen, &i) in by_p.iter().enumerate() {
+        let i = i as usize;
+        let (pi, qi) = (p[i], q[i]);
+        let r = rank[i] as usize;
+        // Earlier points with a lower q rank: their count and q sum.
+        let (mut below, mut below_sum) = (0usize, Sum::default());
+        let mut k = r;
+        while k > 0 {
+            below += counts[k] as usize;
+            below_sum.add(sums[k].value());
+            k &= k - 1;
+        }
+        let above = seen - below;
+        off.add(pi * (qi * above as f64 + below_sum.value()));
+        diagonal.add(pi * qi);
+        let mut k = r + 1;
+        while k <= n {
+            counts[k] += 1;
+            sums[k].add(qi);
+            k += k & k.wrapping_neg();
+        }
+    }
+    let mut total = Sum::default();
+    total.add(2.0 * off.value());
+    total.add(diagonal.value());
+    total.value()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn brute_min_min(p: &[f64], q: &[f64]) -> f64 {
+        let mut s = 0.0;
+        for i in 0..p.len() {
+            for j in 0..p.len() {
+                s += p[i].min(p[j]) * q[i].min(q[j]);
+            }
+        }
+        s
+    }
+
+    #[test]
+    fn sum_min_min_matches_brute_force_with_ties() {
+        let p = [0.5, 0.25, 0.5, 0.75, 0.0, 0.25];
+        let q = [0.125, 0.125, 0.875, 0.5, 0.5, 0.125];
+        assert!((sum_min_min(&p, &q) - brute_min_min(&p, &q)).abs() < 1e-14);
+        let mut p1 = p;
+        let ones = [1.0; 6];
+        assert!((sum_min_1d(&mut p1) - brute_min_min(&p, &ones)).abs() < 1e-14);
+    }
+
+    #[test]
+    fn kinetic_tree_tracks_the_envelope() {
+        // Lines j t + c_j for a few slopes, with range updates.
+        // Enough lines for several buckets; a fixed pseudo-random update stream.
+        let len = 5 * BUCKET + 3;
+        let slopes: Vec<f64> = (0..len).map(|j| j as f64 * 0.37 - 20.0).collect();
+        let mut tree = Kinetic::new(slopes.clone());
+        let mut c = vec![0.0; len];
+        let mut state = 12345u64;
+        let mut t = 0.0;
+        for _ in 0..400 {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            let a = (state >> 33) as usize % (len + 1);
+            let b = (state >> 13) as usize % (len + 1);
+            let (lo, hi) = (a.min(b), a.max(b));
+            let d = if state & 1 == 0 { 1.0 } else { -1.0 };
+            tree.advance(t);
+            tree.add(lo, hi, d, t);
+            for cj in &mut c[lo..hi] {
+                *cj += d;
+            }
+            tree.advance(t);
+            let want = (0..len)
+                .map(|j| slopes[j] * t + c[j])
+                .fold(f64::MIN, f64::max);
+            assert!((tree.max_at(t) - want).abs() < 1e-9, "t = {t}");
+            t += ((state >> 40) % 7) as f64 * 0.01;
+        }
+    }
+}

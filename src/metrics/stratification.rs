@@ -1,0 +1,220 @@
+//! Stratification checks: Latin (n-rooks), m x k strata, (0, m, 2)-nets.
+//!
+//! Cells are computed exactly from the f32 values: `floor(x * cells)` is
+//! evaluated in integers from the f32's mantissa and exponent, so a point on a
+//! cell's left edge is in that cell and no rounding can move it.
+
+use alloc::vec;
+use alloc::vec::Vec;
+
+use glam::Vec2;
+
+use super::validate;
+use crate::Error;
+
+/// `floor(v * cells)`, exactly, for `v` a finite f32 in `[0, 1)` (`-0.0` is 0).
+#[inline]
+pub(crate) fn cell_of(v: f32, cells: u64) -> u64 {
+    let bits = v.to_bits() & 0x7fff_ffff;
+    if bits == 0 {
+        return 0;
+    }
+    let exponent = (bits >> 23) as i32;
+    let fraction = u64::from(bits & 0x007f_ffff);
+    // v = mantissa * 2^-shift, with shift >= 24 since v < 1.
+    let (mantissa, shift) = if exponent == 0 {
+        (fraction, 149)
+    } else {
+        (fraction | 0x0080_0000, 150 - exponent)
+    };
+    let product = u128::from(mantissa) * u128::from(cells);
+    if shift >= 128 {
+        0
+    } else {
+        (product >> shift) as u64
+    }
+}
+
+/// Whether the set is Latin (n-rooks): each of the `n` columns
+/// `[i/n, (i+1)/n)` and each of the `n` rows holds exactly one point.
+///
+/// O(n) time and O(n) memory (two bit sets). Cells are exact (see the module
+/// docs): a point on a column's left edge belongs to that column.
+///
+/// # Errors
+///
+/// [`Error::EmptyPointSet`], [`Error::NonFinitePoint`] or
+/// [`Error::PointOutOfRange`] (naming the first bad point). `-0.0` counts as 0.
+///
+/// # Examples
+///
+/// ```
+/// use wellspread::{NRooks, Sampler2D, glam::Vec2, metrics::is_latin};
+/// let rooks = NRooks::new(100)?;
+/// let mut points = vec![Vec2::ZERO; 100];
+/// rooks.fill(9, &mut points);
+/// assert!(is_latin(&points)?);
+/// assert!(!is_latin(&[Vec2::new(0.1, 0.1), Vec2::new(0.2, 0.9)])?);
+/// # Ok::<(), wellspread::Error>(())
+/// ```
+pub fn is_latin(points: &[Vec2]) -> Result<bool, Error> {
+    validate(points)?;
+    let n = points.len();
+    let mut columns = vec![false; n];
+    let mut rows = vec![false; n];
+    for p in points {
+        let c = cell_of(p.x, n as u64) as usize;
+        let r = cell_of(p.y, n as u64) as usize;
+        if columns[c] || rows[r] {
+            return Ok(false);
+        }
+        columns[c] = true;
+        rows[r] = true;
+    }
+    Ok(true)
+}
+
+/// Whether the set is stratified on a `columns x rows` grid: every cell
+/// `[i/columns, (i+1)/columns) x [j/rows, (j+1)/rows)` holds exactly
+/// `n / (columns rows)` points (one, for jittered sets of `columns rows` points).
+///
+/// O(n) time, O(columns rows) memory. Cells are exact (see the module docs).
+///
+/// # Errors
+///
+/// [`Error::ZeroGridSide`] if a side is 0, [`Error::GridDoesNotDivide`] if
+/// `columns rows` does not divide n, and the point errors of [`is_latin`].
+///
+/// # Examples
+///
+/// ```
+/// use wellspread::{Jittered, Sampler2D, glam::Vec2, metrics::is_stratified};
+/// let jittered = Jittered::new(12)?; // 3 x 4 strata
+/// let mut points = vec![Vec2::ZERO; 12];
+/// jittered.fill(5, &mut points);
+/// assert!(is_stratified(&points, 3, 4)? || is_stratified(&points, 4, 3)?);
+/// assert!(is_stratified(&points, 1, 1)?);
+/// assert!(is_stratified(&points, 5, 1).is_err());
+/// # Ok::<(), wellspread::Error>(())
+/// ```
+pub fn is_stratified(points: &[Vec2], columns: u32, rows: u32) -> Result<bool, Error> {
+    if columns == 0 || rows == 0 {
+        return Err(Error::ZeroGridSide { columns, rows });
+    }
+    validate(points)?;
+    let n = points.len();
+    let cells = u64::from(columns) * u64::from(rows);
+    if n as u64 % cells != 0 {
+        return Err(Error::GridDoesNotDivide { columns, rows, n });
+    }
+    // cells divides n, so it fits in memory as counts.
+    let per_cell = (n as u64 / cells) as u32;
+    let mut counts = vec![0u32; cells as usize];
+    for p in points {
+        let c = cell_of(p.x, u64::from(columns));
+        let r = cell_of(p.y, u64::from(rows));
+        let count = &mut counts[(r * u64::from(columns) + c) as usize];
+        if *count == per_cell {
+            return Ok(false);
+        }
+        *count += 1;
+    }
+    // n points, none of the cells over per_cell, n = cells * per_cell: all full.
+    Ok(true)
+}
+
+/// Whether the set is a (0, m, 2)-net in base 2: `n = 2^m` and every
+/// elementary interval `[i/2^k, (i+1)/2^k) x [j/2^(m-k), (j+1)/2^(m-k))` of
+/// area `1/n`, for all `m + 1` shapes `k = 0..=m`, holds exactly one point.
+///
+/// O(n log n) time (one pass per shape over exact integer cell indices), O(n)
+/// memory. f32 values just below 1 are `2^-24` apart, so no f32 set of more
+/// than 2^24 points is a net (its narrowest columns near 1 are empty).
+///
+/// # Errors
+///
+/// [`Error::NotPowerOfTwo`] if `n` is not a power of two, and the point errors
+/// of [`is_latin`].
+///
+/// # Examples
+///
+/// ```
+/// use wellspread::{glam::Vec2, metrics::is_net_base2};
+/// // The Hammersley set (i / n, bit-reversed i) is a (0, m, 2)-net.
+/// let m = 6;
+/// let points: Vec<Vec2> = (0u32..1 << m)
+///     .map(|i| Vec2::new(i as f32 / 64.0, (i.reverse_bits() >> (32 - m)) as f32 / 64.0))
+///     .collect();
+/// assert!(is_net_base2(&points)?);
+/// # Ok::<(), wellspread::Error>(())
+/// ```
+pub fn is_net_base2(points: &[Vec2]) -> Result<bool, Error> {
+    validate(points)?;
+    let n = points.len();
+    if !n.is_power_of_two() {
+        return Err(Error::NotPowerOfTwo { n });
+    }
+    let m = n.trailing_zeros();
+    // Fixed-point coordinates with m bits: the cell in a 2^k-wide column
+    // is the top k bits.
+    let cells: Vec<(u64, u64)> = points
+        .iter()
+        .map(|p| (cell_of(p.x, n as u64), cell_of(p.y, n as u64)))
+        .collect();
+    let mut stamp = vec![u32::MAX; n];
+    for k in 0..=m {
+        let (drop_x, drop_y) = (m - k, k);
+        for &(x, y) in &cells {
+            // Top k bits of x, then top m - k bits of y: an index below 2^m.
+            let id = (((x >> drop_x) << (m - k)) | (y >> drop_y)) as usize;
+            if stamp[id] == k {
+                return Ok(false);
+            }
+            stamp[id] = k;
+        }
+    }
+    Ok(true)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cell_of_is_exact() {
+        assert_eq!(cell_of(0.0, 10), 0);
+        assert_eq!(cell_of(-0.0, 10), 0);
+        assert_eq!(cell_of(0.5, 2), 1);
+        assert_eq!(cell_of(f32::from_bits(0x3effffff), 2), 0); // just below 1/2
+        assert_eq!(cell_of(0.999_999_94, 1 << 24), (1 << 24) - 1);
+        assert_eq!(cell_of(f32::from_bits(1), u64::MAX), 0);
+        // 0.1f32 * 10 is 1.0000000149..., so floor is 1.
+        assert_eq!(cell_of(0.1, 10), 1);
+        // 0.3f32 = 0.300000011920928955078125 -> 3 of 10; 0.7f32 is below 0.7.
+        assert_eq!(cell_of(0.3, 10), 3);
+        assert_eq!(cell_of(0.7, 10), 6);
+        for n in [3u64, 7, 1000, 12_345_678, u32::MAX as u64] {
+            for i in 0..200u32 {
+                let v = f32::from_bits(0x3f00_0000 + i * 40_000) - 0.5;
+                let exact = cell_of(v, n);
+                let approx = (f64::from(v) * n as f64).floor() as u64;
+                assert!(exact.abs_diff(approx) <= 1);
+            }
+        }
+    }
+
+    #[test]
+    fn zero_grid_side_is_an_error() {
+        assert!(matches!(
+            is_stratified(&[Vec2::ZERO], 0, 1),
+            Err(Error::ZeroGridSide {
+                columns: 0,
+                rows: 1
+            })
+        ));
+        assert!(matches!(
+            is_stratified(&[Vec2::ZERO; 3], 2, 1),
+            Err(Error::GridDoesNotDivide { n: 3, .. })
+        ));
+    }
+}
