@@ -634,7 +634,7 @@ fn main() {
     let _ = std::fs::write(dir.join("spectrum.svg"), spectrum_svg(&config, &spectra));
     let _ = writeln!(
         report,
-        "Plots: `convergence-<integrand>.svg`, `points.svg`, `spectrum.svg` in `{}`.\n\nRun time {:.1} s.",
+        "Plots: `convergence-<integrand>.svg`, `points.svg`, `spectrum.svg` in `{}`.\n\nRun time {:.2} s.",
         dir.display(),
         start.elapsed().as_secs_f64()
     );
