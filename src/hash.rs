@@ -8,6 +8,9 @@
 //! Floats are made in one place, [`stratum_to_unit_f32`] (and its special
 //! case [`u32_to_unit_f32`]), which works in 24-bit fixed point and truncates,
 //! so a coordinate is never `1.0` and never lands in the neighbouring stratum.
+//! Samplers call its division-free twin (a crate-private `Length` that
+//! stores the reciprocal of the stratum count), which
+//! `tests/bench_equivalence.rs` checks bit for bit against a frozen copy.
 
 /// Number of fraction bits in every coordinate wellspread produces.
 ///
@@ -107,15 +110,34 @@ pub const fn pattern_seed(x: u32, y: u32, frame: u32, dimension: u32) -> u32 {
 pub fn permute(index: u32, len: u32, pattern: u32) -> u32 {
     debug_assert!(len >= 1, "permute needs len >= 1");
     debug_assert!(index < len, "permute index {index} out of range 0..{len}");
+    // Only reached with a bad index; panics (division by zero) for len = 0.
+    let index = if index < len { index } else { index % len };
+    let i = permute_hash(index, len, permute_mask(len), pattern);
+    // The final rotation by `p` makes permutations of the same `len` differ
+    // even where the hash above agrees (Kensler's listing does the same). The
+    // sum is taken in u64 so that `len` near 2^32 cannot wrap.
+    ((i as u64 + pattern as u64) % len as u64) as u32
+}
+
+/// The smallest all-ones mask covering `[0, len)`: the power-of-two domain
+/// [`permute`] hashes in.
+#[inline]
+const fn permute_mask(len: u32) -> u32 {
     let mut w = len.wrapping_sub(1);
     w |= w >> 1;
     w |= w >> 2;
     w |= w >> 4;
     w |= w >> 8;
     w |= w >> 16;
-    let p = pattern;
-    // Only reached with a bad index; panics (division by zero) for len = 0.
-    let mut i = if index < len { index } else { index % len };
+    w
+}
+
+/// [`permute`] before its final rotation: the reversible hash under mask
+/// `w`, cycle-walked into `[0, len)`. Shared by [`permute`] and
+/// [`Permutation`] so that the two cannot drift apart.
+#[inline(always)]
+fn permute_hash(index: u32, len: u32, w: u32, p: u32) -> u32 {
+    let mut i = index;
     // Every step is invertible on the low bits under mask `w`: xor with a
     // constant, multiplication by an odd constant (low bits of a product depend
     // only on low bits of the factors), and xor with masked right shifts. The
@@ -140,13 +162,266 @@ pub fn permute(index: u32, len: u32, pattern: u32) -> u32 {
         i &= w;
         i ^= i >> 5;
         if i < len {
-            break;
+            return i;
         }
     }
-    // The final rotation by `p` makes permutations of the same `len` differ
-    // even where the hash above agrees (Kensler's listing does the same). The
-    // sum is taken in u64 so that `len` near 2^32 cannot wrap.
-    ((i as u64 + p as u64) % len as u64) as u32
+}
+
+/// Exact division by a fixed `d` in `[1, 2^32)` as a shift (powers of two)
+/// or one 64 x 64 -> 128-bit multiply and a shift, for numerators below 2^49.
+///
+/// Samplers divide by the same few numbers (`n`, columns, rows) for every
+/// sample; a hardware 64-bit divide costs tens of cycles, the multiply a few.
+/// For `d` not a power of two, with `l = ceil(log2 d)`, `s = max(64, 49 + l)`
+/// and `m = ceil(2^s / d)`, `floor(x / d) = floor(x * m / 2^s)` for all
+/// `x < 2^(s - l)`, which includes all `x < 2^49` (Granlund & Montgomery
+/// 1994, "Division by invariant integers using multiplication", Theorem 4.2:
+/// `m * d - 2^s < d <= 2^l`, so the error term stays below `1 / d`). Taking
+/// `s >= 64` makes the first shift the free "high word" of the product;
+/// `m < 2^63` fits in u64 (`d >= 3` when `s = 64`, else `m <= 2^50 + 1`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(crate) struct Divisor {
+    d: u32,
+    /// `log2 d` for a power of two, else `s - 64`.
+    shift: u32,
+    /// `m`, or 0 for a power of two.
+    magic: u64,
+}
+
+impl Divisor {
+    /// Numerators must be below `2^NUMERATOR_BITS`: `2^48` (a stratum
+    /// boundary `(stratum + 1) << 24` with `stratum < 2^24`) plus a
+    /// rounding term below `2^32`.
+    const NUMERATOR_BITS: u32 = 49;
+
+    /// The divisor `d`; `d` must be at least 1 (checked in debug builds; a
+    /// zero is treated as 1 in release builds).
+    pub(crate) const fn new(d: u32) -> Self {
+        debug_assert!(d >= 1);
+        let d = if d == 0 { 1 } else { d };
+        if d.is_power_of_two() {
+            return Self {
+                d,
+                shift: d.trailing_zeros(),
+                magic: 0,
+            };
+        }
+        let l = u32::BITS - (d - 1).leading_zeros();
+        let s = if Self::NUMERATOR_BITS + l > 64 {
+            Self::NUMERATOR_BITS + l
+        } else {
+            64
+        };
+        let magic = (1u128 << s).div_ceil(d as u128);
+        Self {
+            d,
+            shift: s - 64,
+            magic: magic as u64,
+        }
+    }
+
+    /// The divisor itself.
+    #[inline(always)]
+    pub(crate) const fn get(self) -> u32 {
+        self.d
+    }
+
+    /// `log2 d` if `d` is a power of two.
+    #[inline(always)]
+    const fn log2(self) -> Option<u32> {
+        if self.magic == 0 {
+            Some(self.shift)
+        } else {
+            None
+        }
+    }
+
+    /// `x / d` for `x < 2^49`.
+    #[inline(always)]
+    pub(crate) const fn div(self, x: u64) -> u64 {
+        debug_assert!(x < 1 << Self::NUMERATOR_BITS);
+        // The branch goes the same way for every call on one divisor.
+        if self.magic == 0 {
+            x >> self.shift
+        } else {
+            (((x as u128 * self.magic as u128) >> 64) as u64) >> self.shift
+        }
+    }
+
+    /// `(x / d, x % d)` for a u32 `x`.
+    #[inline(always)]
+    pub(crate) const fn div_rem(self, x: u32) -> (u32, u32) {
+        let q = self.div(x as u64) as u32;
+        (q, x - q * self.d)
+    }
+
+    /// `ceil(x / d)` for `x <= 2^48`.
+    #[inline(always)]
+    const fn div_ceil(self, x: u64) -> u64 {
+        self.div(x + self.d as u64 - 1)
+    }
+}
+
+/// A length prepared for [`permute`] and [`stratum_to_unit_f32`]: its
+/// hashing mask and its reciprocal, computed once per sampler so that the
+/// per-sample paths need no division. Results are bit-identical to the free
+/// functions (`tests/bench_equivalence.rs` checks it against a frozen copy).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(crate) struct Length {
+    divisor: Divisor,
+    mask: u32,
+}
+
+impl Length {
+    /// Prepares `len >= 1`.
+    pub(crate) const fn new(len: u32) -> Self {
+        Self {
+            divisor: Divisor::new(len),
+            mask: permute_mask(len),
+        }
+    }
+
+    /// The length itself.
+    #[inline(always)]
+    pub(crate) const fn get(self) -> u32 {
+        self.divisor.get()
+    }
+
+    /// `(x / len, x % len)`.
+    #[inline(always)]
+    pub(crate) const fn div_rem(self, x: u32) -> (u32, u32) {
+        self.divisor.div_rem(x)
+    }
+
+    /// Whether the length is a power of two: then every grid length of a
+    /// sampler of `n = len` is one too, and `fill` runs the `POW2 = true`
+    /// instances of the methods below.
+    #[inline(always)]
+    pub(crate) const fn is_power_of_two(self) -> bool {
+        self.divisor.log2().is_some()
+    }
+
+    /// [`div_rem`](Self::div_rem), specialised at compile time: with `POW2`
+    /// the caller guarantees a power of two (checked in debug builds), so
+    /// the loop that calls it holds a shift and a mask and no branch.
+    #[inline(always)]
+    pub(crate) const fn div_rem_in<const POW2: bool>(self, x: u32) -> (u32, u32) {
+        if POW2 {
+            debug_assert!(self.is_power_of_two());
+            (x >> self.divisor.shift, x & (self.get() - 1))
+        } else {
+            self.div_rem(x)
+        }
+    }
+
+    /// [`stratum_to_unit_f32`](Self::stratum_to_unit_f32), specialised at
+    /// compile time like [`div_rem_in`](Self::div_rem_in).
+    #[inline(always)]
+    pub(crate) const fn stratum_to_unit_f32_in<const POW2: bool>(
+        self,
+        stratum: u32,
+        bits: u32,
+    ) -> f32 {
+        if POW2 {
+            debug_assert!(self.is_power_of_two() && self.get() <= MAX_STRATA);
+            power_of_two_stratum_to_unit_f32(stratum, self.divisor.shift, bits)
+        } else {
+            self.stratum_to_unit_f32(stratum, bits)
+        }
+    }
+
+    /// Permutation `pattern` of `[0, len)`: [`permute`]`(_, len, pattern)`
+    /// with the per-pattern work (the rotation `pattern % len`) done here,
+    /// once.
+    #[inline(always)]
+    pub(crate) const fn permutation(self, pattern: u32) -> Permutation {
+        Permutation {
+            len: self,
+            pattern,
+            rotation: self.divisor.div_rem(pattern).1,
+        }
+    }
+
+    /// [`permutation`](Self::permutation), specialised at compile time like
+    /// [`div_rem_in`](Self::div_rem_in).
+    #[inline(always)]
+    pub(crate) const fn permutation_in<const POW2: bool>(self, pattern: u32) -> Permutation {
+        Permutation {
+            len: self,
+            pattern,
+            rotation: self.div_rem_in::<POW2>(pattern).1,
+        }
+    }
+
+    /// [`stratum_to_unit_f32`]`(stratum, len, bits)` for `stratum < len <=
+    /// 2^24`, without its two 64-bit divisions.
+    #[inline(always)]
+    pub(crate) const fn stratum_to_unit_f32(self, stratum: u32, bits: u32) -> f32 {
+        debug_assert!(self.get() <= MAX_STRATA && stratum < self.get());
+        if let Some(k) = self.divisor.log2() {
+            if k <= UNIT_BITS {
+                return power_of_two_stratum_to_unit_f32(stratum, k, bits);
+            }
+        }
+        let start = self.divisor.div_ceil((stratum as u64) << UNIT_BITS);
+        let end = self.divisor.div_ceil((stratum as u64 + 1) << UNIT_BITS);
+        // Same arithmetic as `stratum_to_unit_f32` from here on; with valid
+        // arguments `end > start` and `t < 2^24`, and the clamps stay for
+        // release builds handed bad ones.
+        let t = start + ((end.saturating_sub(start) * bits as u64) >> 32);
+        let t = if t < MAX_STRATA as u64 {
+            t
+        } else {
+            MAX_STRATA as u64 - 1
+        };
+        t as f32 * (1.0 / MAX_STRATA as f32)
+    }
+}
+
+/// [`stratum_to_unit_f32`]`(stratum, 2^k, bits)` for `k <= 24`, by shifts:
+/// with `2^k` strata of width `2^(24 - k)`, `start` and `end` are exact
+/// shifts and `(width * bits) >> 32` is `bits >> (8 + k)`; the sum stays below
+/// 2^24, so there is no clamp either.
+#[inline(always)]
+const fn power_of_two_stratum_to_unit_f32(stratum: u32, k: u32, bits: u32) -> f32 {
+    // (Shifted as u64: at k = 24 the shift is 32.)
+    let t = (stratum << (UNIT_BITS - k)) + ((bits as u64) >> (32 - UNIT_BITS + k)) as u32;
+    t as f32 * (1.0 / MAX_STRATA as f32)
+}
+
+/// One permutation of `[0, len)`, ready to apply: [`permute`] with its
+/// per-pattern work hoisted, for `fill` loops and random access alike.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Permutation {
+    len: Length,
+    pattern: u32,
+    /// `pattern % len`: `(i + pattern) % len == (i + rotation) % len`, and
+    /// with `i, rotation < len` that is one conditional subtraction.
+    rotation: u32,
+}
+
+impl Permutation {
+    /// Element `index` (`< len`) of the permutation.
+    #[inline(always)]
+    pub(crate) fn apply(&self, index: u32) -> u32 {
+        let len = self.len.get();
+        debug_assert!(index < len, "permute index {index} out of range 0..{len}");
+        // As in `permute`: a bad index is reduced first, or the walk could
+        // loop forever.
+        let index = if index < len {
+            index
+        } else {
+            self.len.div_rem(index).1
+        };
+        let i = permute_hash(index, len, self.len.mask, self.pattern);
+        // i + rotation < 2 len <= 2^33: summed in u64 so that it cannot wrap.
+        let sum = i as u64 + self.rotation as u64;
+        if sum >= len as u64 {
+            (sum - len as u64) as u32
+        } else {
+            sum as u32
+        }
+    }
 }
 
 /// 32 random bits for `(index, pattern)`: Kensler 2013's `randfloat` hash
@@ -406,6 +681,35 @@ mod tests {
                     let s = (x as f64 * strata as f64).floor() as u32;
                     assert_eq!(s, stratum, "strata {strata} bits {bits}: {x}");
                 }
+            }
+        }
+    }
+
+    #[test]
+    fn divisor_is_exact_below_2_pow_49() {
+        let mut divisors: std::vec::Vec<u32> = (1..=1000).collect();
+        for k in 10..32 {
+            divisors.extend([(1 << k) - 1, 1 << k, (1 << k) + 1]);
+        }
+        divisors.extend([16_777_213, 65_521, 3_000_000_019, u32::MAX - 1, u32::MAX]);
+        let top = (1u64 << 49) - 1;
+        let mut x = 0x1234_5678_9abc_u64;
+        for d in divisors {
+            let div = Divisor::new(d);
+            let d64 = d as u64;
+            let q_top = top / d64;
+            let mut xs = std::vec![0, 1, d64 - 1, d64, d64 + 1, top, top - 1];
+            xs.extend([q_top * d64, q_top * d64 - 1, (q_top - 1) * d64 + d64 - 1]);
+            for _ in 0..200 {
+                x = x.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1);
+                xs.push(x >> 15);
+                xs.push((x >> 40) * d64 + d64 - 1);
+            }
+            for x in xs.into_iter().filter(|&x| x <= top) {
+                assert_eq!(div.div(x), x / d64, "{x} / {d}");
+            }
+            for x in [0, 1, d - 1, d, u32::MAX - 1, u32::MAX] {
+                assert_eq!(div.div_rem(x), (x / d, x % d), "{x} divrem {d}");
             }
         }
     }

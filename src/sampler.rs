@@ -56,6 +56,11 @@ pub trait Sampler2D {
     }
 }
 
+/// Entries of the stack tables some `fill` overrides build for per-row or
+/// per-column work (1 KiB of u32 each): enough for the coarse grid of every
+/// n up to 65536, small enough for any stack.
+pub(crate) const SMALL_TABLE: usize = 256;
+
 /// The panic every `fill` shares, so the message is the same everywhere.
 #[inline]
 pub(crate) fn check_fill_len(requested: usize, len: u32) {

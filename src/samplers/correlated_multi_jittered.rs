@@ -1,8 +1,8 @@
 use glam::Vec2;
 
 use crate::Error;
-use crate::hash::{hash_u32, permute, rand_u32, salt, stratum_to_unit_f32};
-use crate::sampler::{Sampler2D, most_square_grid};
+use crate::hash::{Length, Permutation, hash_u32, rand_u32, salt};
+use crate::sampler::{SMALL_TABLE, Sampler2D, check_fill_len, most_square_grid};
 use crate::samplers::n_rooks::check_rook_count;
 
 /// Correlated multi-jittered sampling (Kensler 2013): multi-jitter in which
@@ -25,9 +25,12 @@ use crate::samplers::n_rooks::check_rook_count;
 ///
 /// # Cost
 ///
-/// One hash of the pattern, three [`permute`] (expected under two rounds
-/// each) and two [`rand_u32`] per sample, plus two fixed-point stratum
-/// conversions.
+/// One hash of the pattern, three [`permute`](crate::hash::permute)
+/// (expected under two rounds each) and two [`rand_u32`] per sample, plus two
+/// fixed-point stratum conversions; no division (the sampler stores
+/// reciprocals of its lengths). `fill` hashes the pattern once and tabulates
+/// the two shared shuffles (for grids up to 256 x 256), leaving one permute
+/// per sample.
 ///
 /// # Limits
 ///
@@ -56,8 +59,10 @@ use crate::samplers::n_rooks::check_rook_count;
 /// collapses every seed to 0 for pattern 0.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct CorrelatedMultiJittered {
-    columns: u32,
-    rows: u32,
+    // Lengths carry their reciprocals, so no sample needs a division.
+    columns: Length,
+    rows: Length,
+    n: Length,
 }
 
 impl CorrelatedMultiJittered {
@@ -73,50 +78,125 @@ impl CorrelatedMultiJittered {
     pub fn new(n: u32) -> Result<Self, Error> {
         check_rook_count("correlated-multi-jittered", n)?;
         let (columns, rows) = most_square_grid(n);
-        Ok(Self { columns, rows })
+        Ok(Self {
+            columns: Length::new(columns),
+            rows: Length::new(rows),
+            n: Length::new(n),
+        })
     }
 
     /// Number of coarse grid columns.
     #[must_use]
     pub fn columns(&self) -> u32 {
-        self.columns
+        self.columns.get()
     }
 
     /// Number of coarse grid rows.
     #[must_use]
     pub fn rows(&self) -> u32 {
-        self.rows
+        self.rows.get()
+    }
+}
+
+impl CorrelatedMultiJittered {
+    /// Sample `index` given the pattern's hash `seed`, its order permutation
+    /// and the shared shuffles (`sub_column(row)`, `sub_row(column)`): the
+    /// one formula `sample` and `fill` share. `POW2` promises a power-of-two
+    /// `n` (so grid sides too), for a branch-free `fill` loop.
+    #[inline(always)]
+    fn point<const POW2: bool>(
+        &self,
+        seed: u32,
+        order: &Permutation,
+        sub_column: impl Fn(u32) -> u32,
+        sub_row: impl Fn(u32) -> u32,
+        index: u32,
+    ) -> Vec2 {
+        let cell = order.apply(index);
+        let (row, column) = self.columns.div_rem_in::<POW2>(cell);
+        // One shuffle for all columns, one for all rows: Kensler's
+        // correlation. Fine column = column * rows + shuffled row.
+        let (columns, rows) = (self.columns.get(), self.rows.get());
+        Vec2::new(
+            self.n.stratum_to_unit_f32_in::<POW2>(
+                column * rows + sub_column(row),
+                rand_u32(cell, seed ^ salt::JITTER_X),
+            ),
+            self.n.stratum_to_unit_f32_in::<POW2>(
+                row * columns + sub_row(column),
+                rand_u32(cell, seed ^ salt::JITTER_Y),
+            ),
+        )
     }
 }
 
 impl Sampler2D for CorrelatedMultiJittered {
     #[inline]
     fn len(&self) -> u32 {
-        self.columns * self.rows
+        self.n.get()
     }
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        let n = self.len();
-        debug_assert!(index < n, "index {index} out of range 0..{n}");
+        debug_assert!(
+            index < self.len(),
+            "index {index} out of range 0..{}",
+            self.len()
+        );
         let seed = hash_u32(pattern);
-        let cell = permute(index, n, seed ^ salt::ORDER);
-        let (column, row) = (cell % self.columns, cell / self.columns);
-        // One shuffle for all columns, one for all rows: Kensler's
-        // correlation. Fine column = column * rows + shuffled row.
-        let sub_column = permute(row, self.rows, seed ^ salt::SHUFFLE_X);
-        let sub_row = permute(column, self.columns, seed ^ salt::SHUFFLE_Y);
-        Vec2::new(
-            stratum_to_unit_f32(
-                column * self.rows + sub_column,
-                n,
-                rand_u32(cell, seed ^ salt::JITTER_X),
-            ),
-            stratum_to_unit_f32(
-                row * self.columns + sub_row,
-                n,
-                rand_u32(cell, seed ^ salt::JITTER_Y),
-            ),
+        let shuffle_x = self.rows.permutation(seed ^ salt::SHUFFLE_X);
+        let shuffle_y = self.columns.permutation(seed ^ salt::SHUFFLE_Y);
+        self.point::<false>(
+            seed,
+            &self.n.permutation(seed ^ salt::ORDER),
+            |row| shuffle_x.apply(row),
+            |column| shuffle_y.apply(column),
+            index,
         )
+    }
+
+    fn fill(&self, pattern: u32, out: &mut [Vec2]) {
+        check_fill_len(out.len(), self.len());
+        let seed = hash_u32(pattern);
+        let order = self.n.permutation(seed ^ salt::ORDER);
+        let shuffle_x = self.rows.permutation(seed ^ salt::SHUFFLE_X);
+        let shuffle_y = self.columns.permutation(seed ^ salt::SHUFFLE_Y);
+        let (columns, rows) = (self.columns.get(), self.rows.get());
+        if columns as usize <= SMALL_TABLE && rows as usize <= SMALL_TABLE {
+            // The two shared shuffles have only `rows` and `columns` entries
+            // (16 each at n = 256): tabulated once, they replace two of the
+            // three permutes per sample with loads.
+            let mut sub_columns = [0; SMALL_TABLE];
+            for (row, s) in (0..rows).zip(sub_columns.iter_mut()) {
+                *s = shuffle_x.apply(row);
+            }
+            let mut sub_rows = [0; SMALL_TABLE];
+            for (column, s) in (0..columns).zip(sub_rows.iter_mut()) {
+                *s = shuffle_y.apply(column);
+            }
+            let (sub_column, sub_row) = (
+                |row: u32| sub_columns[row as usize],
+                |column: u32| sub_rows[column as usize],
+            );
+            if self.n.is_power_of_two() {
+                for (index, point) in (0..).zip(out.iter_mut()) {
+                    *point = self.point::<true>(seed, &order, sub_column, sub_row, index);
+                }
+            } else {
+                for (index, point) in (0..).zip(out.iter_mut()) {
+                    *point = self.point::<false>(seed, &order, sub_column, sub_row, index);
+                }
+            }
+        } else {
+            for (index, point) in (0..).zip(out.iter_mut()) {
+                *point = self.point::<false>(
+                    seed,
+                    &order,
+                    |row| shuffle_x.apply(row),
+                    |column| shuffle_y.apply(column),
+                    index,
+                );
+            }
+        }
     }
 }

@@ -1,8 +1,8 @@
 use glam::Vec2;
 
 use crate::Error;
-use crate::hash::{hash_u32, permute, rand_u32, salt, stratum_to_unit_f32};
-use crate::sampler::{Sampler2D, most_square_grid};
+use crate::hash::{Length, Permutation, hash_u32, rand_u32, salt};
+use crate::sampler::{Sampler2D, check_fill_len, most_square_grid};
 use crate::samplers::regular::check_grid;
 
 /// One uniformly random point in each cell of a `columns x rows` grid
@@ -25,8 +25,10 @@ use crate::samplers::regular::check_grid;
 ///
 /// # Cost
 ///
-/// One hash, one [`permute`] (expected under two rounds) and two
-/// [`rand_u32`] per sample, plus two fixed-point stratum conversions.
+/// One hash, one [`permute`](crate::hash::permute) (expected under two
+/// rounds) and two [`rand_u32`] per sample, plus two fixed-point stratum
+/// conversions; no division (the sampler stores reciprocals of its lengths).
+/// `fill` hashes the pattern once.
 ///
 /// # Limits
 ///
@@ -54,8 +56,10 @@ use crate::samplers::regular::check_grid;
 /// "Stochastic sampling in computer graphics", ACM TOG 5(1).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Jittered {
-    columns: u32,
-    rows: u32,
+    // Lengths carry their reciprocals, so no sample needs a division.
+    columns: Length,
+    rows: Length,
+    n: Length,
 }
 
 impl Jittered {
@@ -81,26 +85,53 @@ impl Jittered {
     /// if a side exceeds 2^24 or `columns * rows` exceeds `u32::MAX`.
     pub fn with_grid(columns: u32, rows: u32) -> Result<Self, Error> {
         check_grid("jittered", columns, rows)?;
-        Ok(Self { columns, rows })
+        Ok(Self {
+            columns: Length::new(columns),
+            rows: Length::new(rows),
+            n: Length::new(columns * rows),
+        })
     }
 
     /// Number of grid columns (strata along x).
     #[must_use]
     pub fn columns(&self) -> u32 {
-        self.columns
+        self.columns.get()
     }
 
     /// Number of grid rows (strata along y).
     #[must_use]
     pub fn rows(&self) -> u32 {
-        self.rows
+        self.rows.get()
+    }
+}
+
+impl Jittered {
+    /// Sample `index` given the pattern's hash `seed` and order permutation:
+    /// the one formula `sample` and `fill` share. `POW2` promises a
+    /// power-of-two `n` (so grid sides too), for a branch-free `fill` loop.
+    #[inline(always)]
+    fn point<const POW2: bool>(&self, seed: u32, order: &Permutation, index: u32) -> Vec2 {
+        let cell = order.apply(index);
+        let (row, column) = self.columns.div_rem_in::<POW2>(cell);
+        Vec2::new(
+            self.columns
+                .stratum_to_unit_f32_in::<POW2>(column, rand_u32(cell, seed ^ salt::JITTER_X)),
+            self.rows
+                .stratum_to_unit_f32_in::<POW2>(row, rand_u32(cell, seed ^ salt::JITTER_Y)),
+        )
+    }
+
+    fn fill_in<const POW2: bool>(&self, seed: u32, order: &Permutation, out: &mut [Vec2]) {
+        for (index, point) in (0..).zip(out.iter_mut()) {
+            *point = self.point::<POW2>(seed, order, index);
+        }
     }
 }
 
 impl Sampler2D for Jittered {
     #[inline]
     fn len(&self) -> u32 {
-        self.columns * self.rows
+        self.n.get()
     }
 
     #[inline]
@@ -111,11 +142,18 @@ impl Sampler2D for Jittered {
             self.len()
         );
         let seed = hash_u32(pattern);
-        let cell = permute(index, self.len(), seed ^ salt::ORDER);
-        let (column, row) = (cell % self.columns, cell / self.columns);
-        Vec2::new(
-            stratum_to_unit_f32(column, self.columns, rand_u32(cell, seed ^ salt::JITTER_X)),
-            stratum_to_unit_f32(row, self.rows, rand_u32(cell, seed ^ salt::JITTER_Y)),
-        )
+        self.point::<false>(seed, &self.n.permutation(seed ^ salt::ORDER), index)
+    }
+
+    fn fill(&self, pattern: u32, out: &mut [Vec2]) {
+        check_fill_len(out.len(), self.len());
+        // The pattern hash and the permutation's rotation once per set.
+        let seed = hash_u32(pattern);
+        let order = self.n.permutation(seed ^ salt::ORDER);
+        if self.n.is_power_of_two() {
+            self.fill_in::<true>(seed, &order, out);
+        } else {
+            self.fill_in::<false>(seed, &order, out);
+        }
     }
 }

@@ -1,8 +1,8 @@
 use glam::Vec2;
 
 use crate::Error;
-use crate::hash::{hash_combine, hash_u32, permute, rand_u32, salt, stratum_to_unit_f32};
-use crate::sampler::{Sampler2D, most_square_grid};
+use crate::hash::{Length, Permutation, hash_combine, hash_u32, rand_u32, salt};
+use crate::sampler::{SMALL_TABLE, Sampler2D, check_fill_len, most_square_grid};
 use crate::samplers::n_rooks::check_rook_count;
 
 /// Multi-jittered sampling: jittered on a coarse `columns x rows` grid and
@@ -24,8 +24,11 @@ use crate::samplers::n_rooks::check_rook_count;
 /// # Cost
 ///
 /// One hash of the pattern, two [`hash_combine`] for the per-column and
-/// per-row shuffles, three [`permute`] (expected under two rounds each) and
-/// two [`rand_u32`] per sample.
+/// per-row shuffles, three [`permute`](crate::hash::permute) (expected under
+/// two rounds each) and two [`rand_u32`] per sample; no division (the sampler
+/// stores reciprocals of its lengths). `fill` hashes the pattern once and
+/// tabulates the per-column and per-row shuffle seeds (for grids up to 256 x
+/// 256); the three permutes per sample remain.
 ///
 /// # Limits
 ///
@@ -58,8 +61,10 @@ use crate::samplers::n_rooks::check_rook_count;
 /// permutations: column `c`'s shuffle is `permute(_, rows, hash(seed, c))`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct MultiJittered {
-    columns: u32,
-    rows: u32,
+    // Lengths carry their reciprocals, so no sample needs a division.
+    columns: Length,
+    rows: Length,
+    n: Length,
 }
 
 impl MultiJittered {
@@ -75,57 +80,132 @@ impl MultiJittered {
     pub fn new(n: u32) -> Result<Self, Error> {
         check_rook_count("multi-jittered", n)?;
         let (columns, rows) = most_square_grid(n);
-        Ok(Self { columns, rows })
+        Ok(Self {
+            columns: Length::new(columns),
+            rows: Length::new(rows),
+            n: Length::new(n),
+        })
     }
 
     /// Number of coarse grid columns.
     #[must_use]
     pub fn columns(&self) -> u32 {
-        self.columns
+        self.columns.get()
     }
 
     /// Number of coarse grid rows.
     #[must_use]
     pub fn rows(&self) -> u32 {
-        self.rows
+        self.rows.get()
+    }
+}
+
+impl MultiJittered {
+    /// Sample `index` given the pattern's hash `seed`, its order permutation
+    /// and the per-column and per-row shuffle patterns (`column_pattern(column)`
+    /// shuffles that column's sub-columns, `row_pattern(row)` that row's
+    /// sub-rows): the one formula `sample` and `fill` share. `POW2` promises
+    /// a power-of-two `n` (so grid sides too), for a branch-free `fill` loop.
+    #[inline(always)]
+    fn point<const POW2: bool>(
+        &self,
+        seed: u32,
+        order: &Permutation,
+        column_pattern: impl Fn(u32) -> u32,
+        row_pattern: impl Fn(u32) -> u32,
+        index: u32,
+    ) -> Vec2 {
+        let cell = order.apply(index);
+        let (row, column) = self.columns.div_rem_in::<POW2>(cell);
+        // Coarse column `column` spans fine columns [column * rows, (column +
+        // 1) * rows) and holds one point per coarse row: the column's own
+        // shuffle of its rows picks which fine column each point takes.
+        // Likewise for rows. Distinct shuffles per column make it Chiu et al.'s
+        // (uncorrelated) multi-jitter.
+        let sub_column = self
+            .rows
+            .permutation_in::<POW2>(column_pattern(column))
+            .apply(row);
+        let sub_row = self
+            .columns
+            .permutation_in::<POW2>(row_pattern(row))
+            .apply(column);
+        let (columns, rows) = (self.columns.get(), self.rows.get());
+        Vec2::new(
+            self.n.stratum_to_unit_f32_in::<POW2>(
+                column * rows + sub_column,
+                rand_u32(cell, seed ^ salt::JITTER_X),
+            ),
+            self.n.stratum_to_unit_f32_in::<POW2>(
+                row * columns + sub_row,
+                rand_u32(cell, seed ^ salt::JITTER_Y),
+            ),
+        )
     }
 }
 
 impl Sampler2D for MultiJittered {
     #[inline]
     fn len(&self) -> u32 {
-        self.columns * self.rows
+        self.n.get()
     }
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        let n = self.len();
-        debug_assert!(index < n, "index {index} out of range 0..{n}");
-        let seed = hash_u32(pattern);
-        let cell = permute(index, n, seed ^ salt::ORDER);
-        let (column, row) = (cell % self.columns, cell / self.columns);
-        // Coarse column `column` spans fine columns [column * rows, (column +
-        // 1) * rows) and holds one point per coarse row: the column's own
-        // shuffle of its rows picks which fine column each point takes.
-        // Likewise for rows. Distinct shuffles per column make it Chiu et al.'s
-        // (uncorrelated) multi-jitter.
-        let sub_column = permute(row, self.rows, hash_combine(seed ^ salt::SHUFFLE_X, column));
-        let sub_row = permute(
-            column,
-            self.columns,
-            hash_combine(seed ^ salt::SHUFFLE_Y, row),
+        debug_assert!(
+            index < self.len(),
+            "index {index} out of range 0..{}",
+            self.len()
         );
-        Vec2::new(
-            stratum_to_unit_f32(
-                column * self.rows + sub_column,
-                n,
-                rand_u32(cell, seed ^ salt::JITTER_X),
-            ),
-            stratum_to_unit_f32(
-                row * self.columns + sub_row,
-                n,
-                rand_u32(cell, seed ^ salt::JITTER_Y),
-            ),
+        let seed = hash_u32(pattern);
+        self.point::<false>(
+            seed,
+            &self.n.permutation(seed ^ salt::ORDER),
+            |column| hash_combine(seed ^ salt::SHUFFLE_X, column),
+            |row| hash_combine(seed ^ salt::SHUFFLE_Y, row),
+            index,
         )
+    }
+
+    fn fill(&self, pattern: u32, out: &mut [Vec2]) {
+        check_fill_len(out.len(), self.len());
+        let seed = hash_u32(pattern);
+        let order = self.n.permutation(seed ^ salt::ORDER);
+        let (columns, rows) = (self.columns.get(), self.rows.get());
+        if columns as usize <= SMALL_TABLE && rows as usize <= SMALL_TABLE {
+            // Each column's and each row's shuffle pattern costs two hashes;
+            // there are only `columns + rows` of them, so tabulate them once.
+            let mut column_patterns = [0; SMALL_TABLE];
+            for (column, p) in (0..columns).zip(column_patterns.iter_mut()) {
+                *p = hash_combine(seed ^ salt::SHUFFLE_X, column);
+            }
+            let mut row_patterns = [0; SMALL_TABLE];
+            for (row, p) in (0..rows).zip(row_patterns.iter_mut()) {
+                *p = hash_combine(seed ^ salt::SHUFFLE_Y, row);
+            }
+            let (column_pattern, row_pattern) = (
+                |column: u32| column_patterns[column as usize],
+                |row: u32| row_patterns[row as usize],
+            );
+            if self.n.is_power_of_two() {
+                for (index, point) in (0..).zip(out.iter_mut()) {
+                    *point = self.point::<true>(seed, &order, column_pattern, row_pattern, index);
+                }
+            } else {
+                for (index, point) in (0..).zip(out.iter_mut()) {
+                    *point = self.point::<false>(seed, &order, column_pattern, row_pattern, index);
+                }
+            }
+        } else {
+            for (index, point) in (0..).zip(out.iter_mut()) {
+                *point = self.point::<false>(
+                    seed,
+                    &order,
+                    |column| hash_combine(seed ^ salt::SHUFFLE_X, column),
+                    |row| hash_combine(seed ^ salt::SHUFFLE_Y, row),
+                    index,
+                );
+            }
+        }
     }
 }

@@ -1,8 +1,8 @@
 use glam::Vec2;
 
 use crate::Error;
-use crate::hash::{MAX_STRATA, hash_u32, permute, rand_u32, salt, stratum_to_unit_f32};
-use crate::sampler::Sampler2D;
+use crate::hash::{Length, MAX_STRATA, Permutation, hash_u32, rand_u32, salt};
+use crate::sampler::{Sampler2D, check_fill_len};
 
 /// N-rooks (Latin hypercube) sampling: one point in every row and every
 /// column of the `n x n` grid, like `n` rooks that cannot take each other.
@@ -19,8 +19,10 @@ use crate::sampler::Sampler2D;
 ///
 /// # Cost
 ///
-/// One hash, two [`permute`] (expected under two rounds each) and two
-/// [`rand_u32`] per sample, plus two fixed-point stratum conversions.
+/// One hash, two [`permute`](crate::hash::permute) (expected under two
+/// rounds each) and two [`rand_u32`] per sample, plus two fixed-point stratum
+/// conversions; no division (the sampler stores the reciprocal of `n`).
+/// `fill` hashes the pattern once.
 ///
 /// # Limits
 ///
@@ -49,7 +51,8 @@ use crate::sampler::Sampler2D;
 /// permutations instead of a shuffled table.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct NRooks {
-    n: u32,
+    // Carries its reciprocal, so no sample needs a division.
+    n: Length,
 }
 
 /// The statisticians' name for the same set.
@@ -67,7 +70,7 @@ impl NRooks {
     /// [`NRooks::MAX_SAMPLES`].
     pub fn new(n: u32) -> Result<Self, Error> {
         check_rook_count("n-rooks", n)?;
-        Ok(Self { n })
+        Ok(Self { n: Length::new(n) })
     }
 }
 
@@ -87,24 +90,70 @@ pub(crate) fn check_rook_count(sampler: &'static str, n: u32) -> Result<(), Erro
     Ok(())
 }
 
+impl NRooks {
+    /// Sample `index` given the pattern's hash `seed` and its column and row
+    /// permutations: the one formula `sample` and `fill` share. `POW2`
+    /// promises a power-of-two `n`, for a branch-free `fill` loop.
+    #[inline(always)]
+    fn point<const POW2: bool>(
+        &self,
+        seed: u32,
+        columns: &Permutation,
+        rows: &Permutation,
+        index: u32,
+    ) -> Vec2 {
+        // Column and row are two independent permutations of the index, so
+        // index order says nothing about position and padded dimension pairs
+        // that share an index stay decorrelated.
+        let column = columns.apply(index);
+        let row = rows.apply(index);
+        Vec2::new(
+            self.n
+                .stratum_to_unit_f32_in::<POW2>(column, rand_u32(index, seed ^ salt::JITTER_X)),
+            self.n
+                .stratum_to_unit_f32_in::<POW2>(row, rand_u32(index, seed ^ salt::JITTER_Y)),
+        )
+    }
+
+    fn permutations(&self, seed: u32) -> (Permutation, Permutation) {
+        (
+            self.n.permutation(seed ^ salt::SHUFFLE_X),
+            self.n.permutation(seed ^ salt::SHUFFLE_Y),
+        )
+    }
+}
+
 impl Sampler2D for NRooks {
     #[inline]
     fn len(&self) -> u32 {
-        self.n
+        self.n.get()
     }
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        debug_assert!(index < self.n, "index {index} out of range 0..{}", self.n);
+        debug_assert!(
+            index < self.len(),
+            "index {index} out of range 0..{}",
+            self.len()
+        );
         let seed = hash_u32(pattern);
-        // Column and row are two independent permutations of the index, so
-        // index order says nothing about position and padded dimension pairs
-        // that share an index stay decorrelated.
-        let column = permute(index, self.n, seed ^ salt::SHUFFLE_X);
-        let row = permute(index, self.n, seed ^ salt::SHUFFLE_Y);
-        Vec2::new(
-            stratum_to_unit_f32(column, self.n, rand_u32(index, seed ^ salt::JITTER_X)),
-            stratum_to_unit_f32(row, self.n, rand_u32(index, seed ^ salt::JITTER_Y)),
-        )
+        let (columns, rows) = self.permutations(seed);
+        self.point::<false>(seed, &columns, &rows, index)
+    }
+
+    fn fill(&self, pattern: u32, out: &mut [Vec2]) {
+        check_fill_len(out.len(), self.len());
+        // The pattern hash and both rotations once per set.
+        let seed = hash_u32(pattern);
+        let (columns, rows) = self.permutations(seed);
+        if self.n.is_power_of_two() {
+            for (index, point) in (0..).zip(out.iter_mut()) {
+                *point = self.point::<true>(seed, &columns, &rows, index);
+            }
+        } else {
+            for (index, point) in (0..).zip(out.iter_mut()) {
+                *point = self.point::<false>(seed, &columns, &rows, index);
+            }
+        }
     }
 }

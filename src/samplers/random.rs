@@ -2,7 +2,7 @@ use glam::Vec2;
 
 use crate::Error;
 use crate::hash::{hash_combine, hash_u32, salt, u32_to_unit_f32};
-use crate::sampler::Sampler2D;
+use crate::sampler::{Sampler2D, check_fill_len};
 
 /// Independent uniform points: the baseline every other sampler must beat.
 ///
@@ -53,16 +53,11 @@ impl Random {
     }
 }
 
-impl Sampler2D for Random {
-    #[inline]
-    fn len(&self) -> u32 {
-        self.n
-    }
-
-    #[inline]
-    fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        debug_assert!(index < self.n, "index {index} out of range 0..{}", self.n);
-        let seed = hash_u32(pattern);
+impl Random {
+    /// Sample `index` given the pattern's hash `seed`: the one formula
+    /// `sample` and `fill` share.
+    #[inline(always)]
+    fn point(seed: u32, index: u32) -> Vec2 {
         // Hashing the index before mixing in the seed matters: with
         // `index ^ seed`, two seeds that differ only in bits below n would
         // feed the same inputs in another order and so give the same set.
@@ -75,5 +70,27 @@ impl Sampler2D for Random {
         let bits_x = hash_combine(seed ^ salt::JITTER_X, index);
         let bits_y = hash_u32(bits_x ^ salt::JITTER_Y);
         Vec2::new(u32_to_unit_f32(bits_x), u32_to_unit_f32(bits_y))
+    }
+}
+
+impl Sampler2D for Random {
+    #[inline]
+    fn len(&self) -> u32 {
+        self.n
+    }
+
+    #[inline]
+    fn sample(&self, index: u32, pattern: u32) -> Vec2 {
+        debug_assert!(index < self.n, "index {index} out of range 0..{}", self.n);
+        Self::point(hash_u32(pattern), index)
+    }
+
+    fn fill(&self, pattern: u32, out: &mut [Vec2]) {
+        check_fill_len(out.len(), self.n);
+        // The pattern hash once per set: three hashes per sample, not four.
+        let seed = hash_u32(pattern);
+        for (index, point) in (0..).zip(out.iter_mut()) {
+            *point = Self::point(seed, index);
+        }
     }
 }

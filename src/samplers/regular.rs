@@ -1,8 +1,8 @@
 use glam::Vec2;
 
 use crate::Error;
-use crate::hash::{MAX_STRATA, hash_u32, permute, salt, stratum_to_unit_f32};
-use crate::sampler::{Sampler2D, most_square_grid};
+use crate::hash::{Length, MAX_STRATA, Permutation, hash_u32, salt};
+use crate::sampler::{Sampler2D, check_fill_len, most_square_grid};
 
 /// Cell centres of a `columns x rows` grid: the deterministic baseline that
 /// aliases.
@@ -21,8 +21,10 @@ use crate::sampler::{Sampler2D, most_square_grid};
 ///
 /// # Cost
 ///
-/// One hash and one [`permute`] (expected under two rounds) per sample, plus
-/// two fixed-point stratum conversions.
+/// One hash and one [`permute`](crate::hash::permute) (expected under two
+/// rounds) per sample, plus two fixed-point stratum conversions; no division
+/// (the sampler stores reciprocals of its lengths). `fill` hashes the pattern
+/// once.
 ///
 /// # Limits
 ///
@@ -47,8 +49,10 @@ use crate::sampler::{Sampler2D, most_square_grid};
 /// (why regular grids alias); Shirley 1991 uses it as the baseline.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Regular {
-    columns: u32,
-    rows: u32,
+    // Lengths carry their reciprocals, so no sample needs a division.
+    columns: Length,
+    rows: Length,
+    n: Length,
 }
 
 impl Regular {
@@ -74,19 +78,23 @@ impl Regular {
     /// if a side exceeds 2^24 or `columns * rows` exceeds `u32::MAX`.
     pub fn with_grid(columns: u32, rows: u32) -> Result<Self, Error> {
         check_grid("regular", columns, rows)?;
-        Ok(Self { columns, rows })
+        Ok(Self {
+            columns: Length::new(columns),
+            rows: Length::new(rows),
+            n: Length::new(columns * rows),
+        })
     }
 
     /// Number of grid columns (cells along x).
     #[must_use]
     pub fn columns(&self) -> u32 {
-        self.columns
+        self.columns.get()
     }
 
     /// Number of grid rows (cells along y).
     #[must_use]
     pub fn rows(&self) -> u32 {
-        self.rows
+        self.rows.get()
     }
 }
 
@@ -115,10 +123,26 @@ pub(crate) fn check_grid(sampler: &'static str, columns: u32, rows: u32) -> Resu
     Ok(())
 }
 
+impl Regular {
+    /// Sample `index` given the pattern's order permutation: the one formula
+    /// `sample` and `fill` share. `POW2` promises a power-of-two `n` (so
+    /// grid sides too), for a branch-free `fill` loop.
+    #[inline(always)]
+    fn point<const POW2: bool>(&self, order: &Permutation, index: u32) -> Vec2 {
+        let cell = order.apply(index);
+        let (row, column) = self.columns.div_rem_in::<POW2>(cell);
+        // Half-way bits put the point at the cell's centre, to within 2^-24.
+        Vec2::new(
+            self.columns.stratum_to_unit_f32_in::<POW2>(column, 1 << 31),
+            self.rows.stratum_to_unit_f32_in::<POW2>(row, 1 << 31),
+        )
+    }
+}
+
 impl Sampler2D for Regular {
     #[inline]
     fn len(&self) -> u32 {
-        self.columns * self.rows
+        self.n.get()
     }
 
     #[inline]
@@ -128,12 +152,21 @@ impl Sampler2D for Regular {
             "index {index} out of range 0..{}",
             self.len()
         );
-        let cell = permute(index, self.len(), hash_u32(pattern) ^ salt::ORDER);
-        let (column, row) = (cell % self.columns, cell / self.columns);
-        // Half-way bits put the point at the cell's centre, to within 2^-24.
-        Vec2::new(
-            stratum_to_unit_f32(column, self.columns, 1 << 31),
-            stratum_to_unit_f32(row, self.rows, 1 << 31),
-        )
+        self.point::<false>(&self.n.permutation(hash_u32(pattern) ^ salt::ORDER), index)
+    }
+
+    fn fill(&self, pattern: u32, out: &mut [Vec2]) {
+        check_fill_len(out.len(), self.len());
+        // The permutation (its pattern hash and rotation) once per set.
+        let order = self.n.permutation(hash_u32(pattern) ^ salt::ORDER);
+        if self.n.is_power_of_two() {
+            for (index, point) in (0..).zip(out.iter_mut()) {
+                *point = self.point::<true>(&order, index);
+            }
+        } else {
+            for (index, point) in (0..).zip(out.iter_mut()) {
+                *point = self.point::<false>(&order, index);
+            }
+        }
     }
 }
