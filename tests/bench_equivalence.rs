@@ -32,7 +32,11 @@ mod reference {
         w |= w >> 16;
         let bits = 32 - w.leading_zeros();
         let half = (bits + 1) / 2;
-        let rounds = if bits < 10 { 14 - bits } else { 4 };
+        let rounds = match bits {
+            0..=3 => 11,
+            4..=5 => 5,
+            _ => 4,
+        };
         let mut key = pattern ^ 0x9e37_79b9;
         key ^= key >> 16;
         key = key.wrapping_mul(0x7feb_352d);
