@@ -31,7 +31,7 @@ mod reference {
         w |= w >> 8;
         w |= w >> 16;
         let bits = 32 - w.leading_zeros();
-        let half = (bits + 1) / 2;
+        let half = bits.div_ceil(2);
         let rounds = match bits {
             0..=3 => 11,
             4..=5 => 5,
