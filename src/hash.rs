@@ -82,8 +82,8 @@ pub const fn pattern_seed(x: u32, y: u32, frame: u32, dimension: u32) -> u32 {
 /// ("cycle walking", Black & Rogaway 2002) until they fall inside, and the
 /// result is rotated by `pattern % len` (as in Kensler's listing). Each walk
 /// step lands inside with probability above 1/2. A step is 4 rounds of about
-/// ten integer operations for lengths above 512, and `14 - b` rounds for a
-/// `b`-bit domain below that (short domains need more rounds to mix).
+/// ten integer operations for lengths above 32, 5 rounds from 9 to 32 and
+/// 13 from 2 to 8 (short domains draw fewer key bits per round).
 ///
 /// Patterns reach the permutations of short lengths evenly: over
 /// `20,000 * len!` hashed patterns, every permutation of lengths 2 to 6
@@ -150,16 +150,18 @@ const fn permute_key(pattern: u32) -> u32 {
 /// Rounds of [`permute_hash`] beyond the first four, for a `bits`-bit
 /// domain. Four rounds make every output bit depend on every input bit
 /// (each `>> half` moves the top half down, each multiply moves low bits
-/// up), and pass the pair-frequency measurements from 16 elements up.
-/// Short domains draw only a few key bits per round and need more: 11 in
-/// all for up to 8 elements (the fewest passing the `len!`-cell chi-square
-/// of `tests/permute.rs` at lengths 5 and 6 was 10; one more for margin),
-/// and 5 for 9 to 32, where 4 left the frequency of `(p(0), p(1))` pairs
-/// at the edge of a 3 x 10^6-pattern chi-square.
+/// up), and pass the pair-frequency measurements from 64 elements up
+/// (chi-square of `(p(0), p(1))` over 3 x 10^6 patterns). Short domains
+/// draw only a few key bits per round and need more: 13 in all for 2 to 8
+/// elements (with 11, the 720 permutations of length 6 were measurably
+/// uneven over 3.6 x 10^7 patterns, z = 3.5; 12 was the fewest that
+/// passed; one more for margin) and 5 for 9 to 32 elements (with 4, the
+/// pair frequencies at lengths 12 and 16 sat at z = 2.8). A 0-bit domain
+/// (length 1) has one permutation and needs no more.
 #[inline(always)]
 const fn permute_extra_rounds(bits: u32) -> u32 {
     match bits {
-        0..=3 => 7,
+        1..=3 => 9,
         4..=5 => 1,
         _ => 0,
     }
@@ -785,6 +787,7 @@ mod tests {
         assert_eq!(hash_u32(1), 0x6889_90c0);
         assert_eq!(rand_u32(0, 0), 0xdf6e_5fc8);
         assert_eq!(permute(3, 10, 42), 3);
+        assert_eq!(permute(2, 6, 0xdead_beef), 3);
     }
     #[test]
     fn owen_scramble_is_nested_and_bijective() {

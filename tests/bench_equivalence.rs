@@ -33,7 +33,7 @@ mod reference {
         let bits = 32 - w.leading_zeros();
         let half = bits.div_ceil(2);
         let rounds = match bits {
-            0..=3 => 11,
+            1..=3 => 13,
             4..=5 => 5,
             _ => 4,
         };
