@@ -204,7 +204,8 @@ const fn permute_round(i: u32, k: u32, w: u32, half: u32) -> u32 {
 ///
 /// `k`, `k'` and `k''` are `key` rotated by 0, 11 and 22 bits (disjoint
 /// windows for domains of up to 10 bits), and the key rotates by 7 bits
-/// (coprime to 32, so every round reads fresh low bits) after each round.
+/// after each round (coprime to 32, so successive rounds read different
+/// bits; beyond four rounds a short domain rereads bits in new roles).
 /// This is the round structure of an ARX block cipher shrunk to `b` bits,
 /// as in format-preserving encryption (Black & Rogaway 2002); the design
 /// was chosen by measuring how uniformly it reaches the permutations of
