@@ -30,27 +30,29 @@ mod reference {
         w |= w >> 4;
         w |= w >> 8;
         w |= w >> 16;
+        let bits = 32 - w.leading_zeros();
+        let half = bits.div_ceil(2);
+        let rounds = match bits {
+            1..=3 => 13,
+            4..=5 => 5,
+            _ => 4,
+        };
+        let mut key = pattern ^ 0x9e37_79b9;
+        key ^= key >> 16;
+        key = key.wrapping_mul(0x7feb_352d);
+        key ^= key >> 15;
+        key = key.wrapping_mul(0x846c_a68b);
+        key ^= key >> 16;
         let p = pattern;
         let mut i = if index < len { index } else { index % len };
         loop {
-            i ^= p;
-            i = i.wrapping_mul(0xe170_893d);
-            i ^= p >> 16;
-            i ^= (i & w) >> 4;
-            i ^= p >> 8;
-            i = i.wrapping_mul(0x0929_eb3f);
-            i ^= p >> 23;
-            i ^= (i & w) >> 1;
-            i = i.wrapping_mul(1 | p >> 27);
-            i = i.wrapping_mul(0x6935_fa69);
-            i ^= (i & w) >> 11;
-            i = i.wrapping_mul(0x74dc_b303);
-            i ^= (i & w) >> 2;
-            i = i.wrapping_mul(0x9e50_1cc3);
-            i ^= (i & w) >> 2;
-            i = i.wrapping_mul(0xc860_a3df);
-            i &= w;
-            i ^= i >> 5;
+            for r in 0..rounds {
+                let k = key.rotate_right(7 * r);
+                i = i.wrapping_add(k);
+                i = i.wrapping_mul(k.rotate_right(11) | 1) & w;
+                i ^= i >> half;
+                i ^= (i >> 1) & k.rotate_right(22);
+            }
             if i < len {
                 break;
             }
