@@ -61,6 +61,26 @@ pub trait Sampler2D {
 /// n up to 65536, small enough for any stack.
 pub(crate) const SMALL_TABLE: usize = 256;
 
+/// `f(0), f(1), ..., f(len - 1)` in a stack table of [`SMALL_TABLE`]
+/// entries (`len <= SMALL_TABLE`), for the per-row and per-column work a
+/// `fill` hoists out of its loop.
+#[inline(always)]
+pub(crate) fn small_table(len: u32, f: impl Fn(u32) -> u32) -> [u32; SMALL_TABLE] {
+    debug_assert!(len as usize <= SMALL_TABLE);
+    let mut table = [0; SMALL_TABLE];
+    for (i, entry) in (0..len).zip(table.iter_mut()) {
+        *entry = f(i);
+    }
+    table
+}
+
+/// The index check every fixed-size `sample` shares (debug builds only;
+/// each sampler documents what a release build does with a bad index).
+#[inline(always)]
+pub(crate) fn debug_check_index(index: u32, len: u32) {
+    debug_assert!(index < len, "index {index} out of range 0..{len}");
+}
+
 /// The panic every `fill` shares, so the message is the same everywhere.
 #[inline]
 pub(crate) fn check_fill_len(requested: usize, len: u32) {

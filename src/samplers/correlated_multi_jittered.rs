@@ -2,7 +2,9 @@ use glam::Vec2;
 
 use crate::Error;
 use crate::hash::{Length, Permutation, hash_u32, rand_u32, salt};
-use crate::sampler::{SMALL_TABLE, Sampler2D, check_fill_len, most_square_grid};
+use crate::sampler::{
+    SMALL_TABLE, Sampler2D, check_fill_len, debug_check_index, most_square_grid, small_table,
+};
 use crate::samplers::n_rooks::check_rook_count;
 
 /// Correlated multi-jittered sampling (Kensler 2013): multi-jitter in which
@@ -138,11 +140,7 @@ impl Sampler2D for CorrelatedMultiJittered {
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        debug_assert!(
-            index < self.len(),
-            "index {index} out of range 0..{}",
-            self.len()
-        );
+        debug_check_index(index, self.len());
         let seed = hash_u32(pattern);
         let shuffle_x = self.rows.permutation(seed ^ salt::SHUFFLE_X);
         let shuffle_y = self.columns.permutation(seed ^ salt::SHUFFLE_Y);
@@ -166,14 +164,8 @@ impl Sampler2D for CorrelatedMultiJittered {
             // The two shared shuffles have only `rows` and `columns` entries
             // (16 each at n = 256): tabulated once, they replace two of the
             // three permutes per sample with loads.
-            let mut sub_columns = [0; SMALL_TABLE];
-            for (row, s) in (0..rows).zip(sub_columns.iter_mut()) {
-                *s = shuffle_x.apply(row);
-            }
-            let mut sub_rows = [0; SMALL_TABLE];
-            for (column, s) in (0..columns).zip(sub_rows.iter_mut()) {
-                *s = shuffle_y.apply(column);
-            }
+            let sub_columns = small_table(rows, |row| shuffle_x.apply(row));
+            let sub_rows = small_table(columns, |column| shuffle_y.apply(column));
             let (sub_column, sub_row) = (
                 |row: u32| sub_columns[row as usize],
                 |column: u32| sub_rows[column as usize],

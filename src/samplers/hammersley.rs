@@ -5,7 +5,7 @@ use crate::hash::{
     MAX_STRATA, hash_u32, owen_scramble_reversed, rand_u32, salt, stratum_to_unit_f32,
     u32_to_unit_f32,
 };
-use crate::sampler::Sampler2D;
+use crate::sampler::{Sampler2D, debug_check_index};
 
 /// The Hammersley set `(i / n, phi_2(i))`, randomised: scrambled.
 ///
@@ -106,7 +106,7 @@ impl Sampler2D for Hammersley {
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        debug_assert!(index < self.n, "index {index} out of range 0..{}", self.n);
+        debug_check_index(index, self.n);
         let seed = hash_u32(pattern);
         // Clamp so a release build with a bad index stays in the last column.
         let column = if index < self.n { index } else { self.n - 1 };

@@ -2,7 +2,7 @@ use glam::Vec2;
 
 use crate::Error;
 use crate::hash::{Length, Permutation, hash_u32, rand_u32, salt};
-use crate::sampler::{Sampler2D, check_fill_len, most_square_grid};
+use crate::sampler::{Sampler2D, check_fill_len, debug_check_index, most_square_grid};
 use crate::samplers::regular::check_grid;
 
 /// One uniformly random point in each cell of a `columns x rows` grid
@@ -136,11 +136,7 @@ impl Sampler2D for Jittered {
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        debug_assert!(
-            index < self.len(),
-            "index {index} out of range 0..{}",
-            self.len()
-        );
+        debug_check_index(index, self.len());
         let seed = hash_u32(pattern);
         self.point::<false>(seed, &self.n.permutation(seed ^ salt::ORDER), index)
     }

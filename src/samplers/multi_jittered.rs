@@ -2,7 +2,9 @@ use glam::Vec2;
 
 use crate::Error;
 use crate::hash::{Length, Permutation, hash_combine, hash_u32, rand_u32, salt};
-use crate::sampler::{SMALL_TABLE, Sampler2D, check_fill_len, most_square_grid};
+use crate::sampler::{
+    SMALL_TABLE, Sampler2D, check_fill_len, debug_check_index, most_square_grid, small_table,
+};
 use crate::samplers::n_rooks::check_rook_count;
 
 /// Multi-jittered sampling: jittered on a coarse `columns x rows` grid and
@@ -152,11 +154,7 @@ impl Sampler2D for MultiJittered {
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        debug_assert!(
-            index < self.len(),
-            "index {index} out of range 0..{}",
-            self.len()
-        );
+        debug_check_index(index, self.len());
         let seed = hash_u32(pattern);
         self.point::<false>(
             seed,
@@ -175,14 +173,10 @@ impl Sampler2D for MultiJittered {
         if columns as usize <= SMALL_TABLE && rows as usize <= SMALL_TABLE {
             // Each column's and each row's shuffle pattern costs two hashes;
             // there are only `columns + rows` of them, so tabulate them once.
-            let mut column_patterns = [0; SMALL_TABLE];
-            for (column, p) in (0..columns).zip(column_patterns.iter_mut()) {
-                *p = hash_combine(seed ^ salt::SHUFFLE_X, column);
-            }
-            let mut row_patterns = [0; SMALL_TABLE];
-            for (row, p) in (0..rows).zip(row_patterns.iter_mut()) {
-                *p = hash_combine(seed ^ salt::SHUFFLE_Y, row);
-            }
+            let column_patterns = small_table(columns, |column| {
+                hash_combine(seed ^ salt::SHUFFLE_X, column)
+            });
+            let row_patterns = small_table(rows, |row| hash_combine(seed ^ salt::SHUFFLE_Y, row));
             let (column_pattern, row_pattern) = (
                 |column: u32| column_patterns[column as usize],
                 |row: u32| row_patterns[row as usize],

@@ -2,7 +2,7 @@ use glam::Vec2;
 
 use crate::Error;
 use crate::hash::{Length, MAX_STRATA, Permutation, hash_u32, rand_u32, salt};
-use crate::sampler::{Sampler2D, check_fill_len};
+use crate::sampler::{Sampler2D, check_fill_len, debug_check_index};
 
 /// N-rooks (Latin hypercube) sampling: one point in every row and every
 /// column of the `n x n` grid, like `n` rooks that cannot take each other.
@@ -131,11 +131,7 @@ impl Sampler2D for NRooks {
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        debug_assert!(
-            index < self.len(),
-            "index {index} out of range 0..{}",
-            self.len()
-        );
+        debug_check_index(index, self.len());
         let seed = hash_u32(pattern);
         let (columns, rows) = self.permutations(seed);
         self.point::<false>(seed, &columns, &rows, index)

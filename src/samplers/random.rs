@@ -2,7 +2,7 @@ use glam::Vec2;
 
 use crate::Error;
 use crate::hash::{hash_combine, hash_u32, salt, u32_to_unit_f32};
-use crate::sampler::{Sampler2D, check_fill_len};
+use crate::sampler::{Sampler2D, check_fill_len, debug_check_index};
 
 /// Independent uniform points: the baseline every other sampler must beat.
 ///
@@ -81,7 +81,7 @@ impl Sampler2D for Random {
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        debug_assert!(index < self.n, "index {index} out of range 0..{}", self.n);
+        debug_check_index(index, self.n);
         Self::point(hash_u32(pattern), index)
     }
 

@@ -2,7 +2,7 @@ use glam::Vec2;
 
 use crate::Error;
 use crate::hash::{Length, MAX_STRATA, Permutation, hash_u32, salt};
-use crate::sampler::{Sampler2D, check_fill_len, most_square_grid};
+use crate::sampler::{Sampler2D, check_fill_len, debug_check_index, most_square_grid};
 
 /// Cell centres of a `columns x rows` grid: the deterministic baseline that
 /// aliases.
@@ -147,11 +147,7 @@ impl Sampler2D for Regular {
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        debug_assert!(
-            index < self.len(),
-            "index {index} out of range 0..{}",
-            self.len()
-        );
+        debug_check_index(index, self.len());
         self.point::<false>(&self.n.permutation(hash_u32(pattern) ^ salt::ORDER), index)
     }
 
