@@ -2,6 +2,8 @@
 
 use core::fmt;
 
+use crate::SamplerKind;
+
 /// What was wrong with the input to a sampler constructor or a metric.
 ///
 /// Every variant carries the offending value so that the message can say what
@@ -21,14 +23,24 @@ pub enum Error {
     },
     /// More samples (or grid cells) than the sampler can keep its guarantee for.
     TooManySamples {
-        /// The sampler's name, as the tools spell it.
-        sampler: &'static str,
+        /// The sampler.
+        sampler: SamplerKind,
         /// How many were asked for (columns x rows for a grid).
         requested: u64,
         /// The largest count the sampler accepts.
         max: u64,
         /// Why the limit exists.
         reason: &'static str,
+    },
+    /// A grid with a side above 2^24 strata, more than f32 coordinates in
+    /// `[0, 1)` can tell apart (the most square grid of a prime `n` is `1 x n`).
+    GridTooFine {
+        /// The sampler.
+        sampler: SamplerKind,
+        /// Columns of the grid.
+        columns: u32,
+        /// Rows of the grid.
+        rows: u32,
     },
     /// A metric was given no points.
     EmptyPointSet,
@@ -93,6 +105,17 @@ impl fmt::Display for Error {
             } => write!(
                 f,
                 "{sampler} accepts at most {max} samples, got {requested}: {reason}"
+            ),
+            Error::GridTooFine {
+                sampler,
+                columns,
+                rows,
+            } => write!(
+                f,
+                "{sampler} cannot stratify a {columns} x {rows} grid: a side above 2^24 = 16777216 \
+                 has more strata than f32 can tell apart in [0, 1) (the only grid of a prime n is \
+                 1 x n); pick an n with a divisor near its square root, give the grid shape \
+                 yourself, or use a sequence (sobol, pmj02) that takes any n"
             ),
             Error::EmptyPointSet => {
                 f.write_str("a metric needs at least one point; got an empty set")

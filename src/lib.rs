@@ -15,7 +15,7 @@
 //! after f32 rounding.
 //!
 //! ```
-//! use wellspread::{CorrelatedMultiJittered, Sampler2D, hash::pattern_seed};
+//! use wellspread::{CorrelatedMultiJittered, Sampler2D, pattern_seed};
 //!
 //! let sampler = CorrelatedMultiJittered::new(16)?;
 //! let (px, py) = (120, 45);
@@ -51,13 +51,24 @@ extern crate std;
 pub use glam;
 
 mod error;
-pub mod hash;
 #[cfg(feature = "alloc")]
 pub mod metrics;
+pub mod primitives;
 mod sampler;
 mod samplers;
 
+/// The primitives under their first name: `wellspread::hash::pattern_seed`
+/// and the rest keep working. New code should use [`primitives`].
+pub mod hash {
+    pub use crate::primitives::{
+        MAX_STRATA, ONE_MINUS_EPSILON, UNIT_BITS, hash_combine, hash_u32, owen_scramble,
+        owen_scramble_reversed, pattern_seed, permute, radical_inverse_2, rand_u32,
+        stratum_to_unit_f32, u32_to_unit_f32,
+    };
+}
+
 pub use error::Error;
+pub use primitives::pattern_seed;
 pub use sampler::Sampler2D;
 pub use samplers::{
     AnySampler, CorrelatedMultiJittered, Halton, Hammersley, Jittered, LatinHypercube,

@@ -7,7 +7,7 @@ use glam::Vec2;
 /// Sample `index` of pattern `pattern` is a pure function of the two: no
 /// state, no tables, no allocation, so any thread rendering any tile gets the
 /// same point. `pattern` picks one of 2^32 independent randomisations (one
-/// per pixel and dimension pair, see [`pattern_seed`](crate::hash::pattern_seed)).
+/// per pixel and dimension pair, see [`pattern_seed`](crate::primitives::pattern_seed)).
 ///
 /// Both coordinates of every point are in `[0, 1)` after f32 rounding, for
 /// every index and pattern: the contract every sampler is tested against.
@@ -88,34 +88,4 @@ pub(crate) fn check_fill_len(requested: usize, len: u32) {
         requested <= len as usize,
         "fill asked for {requested} samples of a set of {len}"
     );
-}
-
-/// The most square factorisation `columns x rows = n` with `columns <= rows`:
-/// `columns` is the largest divisor of `n` not above `sqrt(n)`.
-///
-/// Squares give `sqrt(n) x sqrt(n)`, `n = 2^(2k+1)` gives `2^k x 2^(k+1)`,
-/// and a prime gives `1 x n`. O(sqrt(n)) time, paid once per constructor.
-pub(crate) fn most_square_grid(n: u32) -> (u32, u32) {
-    debug_assert!(n >= 1);
-    let mut columns = n.isqrt();
-    while n % columns != 0 {
-        columns -= 1;
-    }
-    (columns, n / columns)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::most_square_grid;
-
-    #[test]
-    fn most_square_grid_picks_the_closest_divisors() {
-        assert_eq!(most_square_grid(1), (1, 1));
-        assert_eq!(most_square_grid(16), (4, 4));
-        assert_eq!(most_square_grid(32), (4, 8));
-        assert_eq!(most_square_grid(100), (10, 10));
-        assert_eq!(most_square_grid(12), (3, 4));
-        assert_eq!(most_square_grid(13), (1, 13));
-        assert_eq!(most_square_grid(u32::MAX), (65_535, 65_537));
-    }
 }

@@ -1,11 +1,9 @@
 use glam::Vec2;
 
-use crate::Error;
-use crate::hash::{Length, Permutation, hash_u32, rand_u32, salt};
-use crate::sampler::{
-    SMALL_TABLE, Sampler2D, check_fill_len, debug_check_index, most_square_grid, small_table,
-};
-use crate::samplers::n_rooks::check_rook_count;
+use crate::primitives::{Permutation, hash_u32, salt};
+use crate::sampler::{SMALL_TABLE, Sampler2D, debug_check_index, small_table};
+use crate::samplers::grid::{Grid, GridPattern, fill_grid};
+use crate::{Error, SamplerKind};
 
 /// Correlated multi-jittered sampling (Kensler 2013): multi-jitter in which
 /// every coarse column uses the same shuffle of its fine sub-columns (and every
@@ -27,7 +25,7 @@ use crate::samplers::n_rooks::check_rook_count;
 ///
 /// # Cost
 ///
-/// One hash of the pattern, three [`permute`](crate::hash::permute)
+/// One hash of the pattern, three [`permute`](crate::primitives::permute)
 /// (expected under two rounds each) and two [`rand_u32`] per sample, plus two
 /// fixed-point stratum conversions; no division (the sampler stores
 /// reciprocals of its lengths). `fill` hashes the pattern once and tabulates
@@ -61,15 +59,12 @@ use crate::samplers::n_rooks::check_rook_count;
 /// collapses every seed to 0 for pattern 0.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct CorrelatedMultiJittered {
-    // Lengths carry their reciprocals, so no sample needs a division.
-    columns: Length,
-    rows: Length,
-    n: Length,
+    grid: Grid,
 }
 
 impl CorrelatedMultiJittered {
     /// The largest `n` accepted: 2^24, the number of distinct f32 strata.
-    pub const MAX_SAMPLES: u32 = crate::hash::MAX_STRATA;
+    pub const MAX_SAMPLES: u32 = crate::primitives::MAX_STRATA;
 
     /// A correlated multi-jittered set of `n` points.
     ///
@@ -78,117 +73,101 @@ impl CorrelatedMultiJittered {
     /// [`Error::ZeroSamples`] for `n = 0`; [`Error::TooManySamples`] above
     /// [`CorrelatedMultiJittered::MAX_SAMPLES`].
     pub fn new(n: u32) -> Result<Self, Error> {
-        check_rook_count("correlated-multi-jittered", n)?;
-        let (columns, rows) = most_square_grid(n);
-        Ok(Self {
-            columns: Length::new(columns),
-            rows: Length::new(rows),
-            n: Length::new(n),
-        })
+        Grid::latin(SamplerKind::CorrelatedMultiJittered, n).map(|grid| Self { grid })
     }
 
     /// Number of coarse grid columns.
     #[must_use]
     pub fn columns(&self) -> u32 {
-        self.columns.get()
+        self.grid.columns()
     }
 
     /// Number of coarse grid rows.
     #[must_use]
     pub fn rows(&self) -> u32 {
-        self.rows.get()
+        self.grid.rows()
+    }
+}
+
+/// One pattern of [`CorrelatedMultiJittered`]: its hash, the order of the
+/// cells, and the two shared shuffles (`sub_column(row)`,
+/// `sub_row(column)`), computed or looked up.
+struct CorrelatedMultiJitteredPattern<'a, C, R> {
+    grid: &'a Grid,
+    seed: u32,
+    order: Permutation,
+    sub_column: C,
+    sub_row: R,
+}
+
+impl<C: Fn(u32) -> u32, R: Fn(u32) -> u32> GridPattern
+    for CorrelatedMultiJitteredPattern<'_, C, R>
+{
+    fn grid(&self) -> &Grid {
+        self.grid
+    }
+
+    #[inline(always)]
+    fn point<const POW2: bool>(&self, index: u32) -> Vec2 {
+        let cell = self.order.apply(index);
+        let (row, column) = self.grid.cell::<POW2>(cell);
+        // One shuffle for all columns, one for all rows: Kensler's
+        // correlation.
+        let sub = ((self.sub_column)(row), (self.sub_row)(column));
+        self.grid
+            .latin_point::<POW2>(cell, (row, column), sub, self.seed)
     }
 }
 
 impl CorrelatedMultiJittered {
-    /// Sample `index` given the pattern's hash `seed`, its order permutation
-    /// and the shared shuffles (`sub_column(row)`, `sub_row(column)`): the
-    /// one formula `sample` and `fill` share. `POW2` promises a power-of-two
-    /// `n` (so grid sides too), for a branch-free `fill` loop.
-    #[inline(always)]
-    fn point<const POW2: bool>(
+    fn pattern(
         &self,
-        seed: u32,
-        order: &Permutation,
-        sub_column: impl Fn(u32) -> u32,
-        sub_row: impl Fn(u32) -> u32,
-        index: u32,
-    ) -> Vec2 {
-        let cell = order.apply(index);
-        let (row, column) = self.columns.div_rem_in::<POW2>(cell);
-        // One shuffle for all columns, one for all rows: Kensler's
-        // correlation. Fine column = column * rows + shuffled row.
-        let (columns, rows) = (self.columns.get(), self.rows.get());
-        Vec2::new(
-            self.n.stratum_to_unit_f32_in::<POW2>(
-                column * rows + sub_column(row),
-                rand_u32(cell, seed ^ salt::JITTER_X),
-            ),
-            self.n.stratum_to_unit_f32_in::<POW2>(
-                row * columns + sub_row(column),
-                rand_u32(cell, seed ^ salt::JITTER_Y),
-            ),
-        )
+        pattern: u32,
+    ) -> CorrelatedMultiJitteredPattern<'_, impl Fn(u32) -> u32, impl Fn(u32) -> u32> {
+        let seed = hash_u32(pattern);
+        let shuffle_x = self.grid.rows.permutation(seed ^ salt::SHUFFLE_X);
+        let shuffle_y = self.grid.columns.permutation(seed ^ salt::SHUFFLE_Y);
+        CorrelatedMultiJitteredPattern {
+            grid: &self.grid,
+            seed,
+            order: self.grid.n.permutation(seed ^ salt::ORDER),
+            sub_column: move |row| shuffle_x.apply(row),
+            sub_row: move |column| shuffle_y.apply(column),
+        }
     }
 }
 
 impl Sampler2D for CorrelatedMultiJittered {
     #[inline]
     fn len(&self) -> u32 {
-        self.n.get()
+        self.grid.len()
     }
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
         debug_check_index(index, self.len());
-        let seed = hash_u32(pattern);
-        let shuffle_x = self.rows.permutation(seed ^ salt::SHUFFLE_X);
-        let shuffle_y = self.columns.permutation(seed ^ salt::SHUFFLE_Y);
-        self.point::<false>(
-            seed,
-            &self.n.permutation(seed ^ salt::ORDER),
-            |row| shuffle_x.apply(row),
-            |column| shuffle_y.apply(column),
-            index,
-        )
+        self.pattern(pattern).point::<false>(index)
     }
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        check_fill_len(out.len(), self.len());
-        let seed = hash_u32(pattern);
-        let order = self.n.permutation(seed ^ salt::ORDER);
-        let shuffle_x = self.rows.permutation(seed ^ salt::SHUFFLE_X);
-        let shuffle_y = self.columns.permutation(seed ^ salt::SHUFFLE_Y);
-        let (columns, rows) = (self.columns.get(), self.rows.get());
+        let computed = self.pattern(pattern);
+        let (columns, rows) = (self.grid.columns(), self.grid.rows());
         if columns as usize <= SMALL_TABLE && rows as usize <= SMALL_TABLE {
             // The two shared shuffles have only `rows` and `columns` entries
             // (16 each at n = 256): tabulated once, they replace two of the
             // three permutes per sample with loads.
-            let sub_columns = small_table(rows, |row| shuffle_x.apply(row));
-            let sub_rows = small_table(columns, |column| shuffle_y.apply(column));
-            let (sub_column, sub_row) = (
-                |row: u32| sub_columns[row as usize],
-                |column: u32| sub_rows[column as usize],
-            );
-            if self.n.is_power_of_two() {
-                for (index, point) in (0..).zip(out.iter_mut()) {
-                    *point = self.point::<true>(seed, &order, sub_column, sub_row, index);
-                }
-            } else {
-                for (index, point) in (0..).zip(out.iter_mut()) {
-                    *point = self.point::<false>(seed, &order, sub_column, sub_row, index);
-                }
-            }
+            let sub_columns = small_table(rows, &computed.sub_column);
+            let sub_rows = small_table(columns, &computed.sub_row);
+            let tabled = CorrelatedMultiJitteredPattern {
+                sub_column: |row: u32| sub_columns[row as usize],
+                sub_row: |column: u32| sub_rows[column as usize],
+                grid: computed.grid,
+                seed: computed.seed,
+                order: computed.order,
+            };
+            fill_grid(&tabled, out);
         } else {
-            for (index, point) in (0..).zip(out.iter_mut()) {
-                *point = self.point::<false>(
-                    seed,
-                    &order,
-                    |row| shuffle_x.apply(row),
-                    |column| shuffle_y.apply(column),
-                    index,
-                );
-            }
+            fill_grid(&computed, out);
         }
     }
 }

@@ -1,7 +1,7 @@
 use glam::Vec2;
 
 use crate::Error;
-use crate::hash::{
+use crate::primitives::{
     hash_combine, hash_u32, owen_scramble_reversed, salt, stratum_to_unit_f32, u32_to_unit_f32,
 };
 use crate::sampler::{Sampler2D, check_fill_len};
@@ -199,8 +199,8 @@ mod tests {
     use super::*;
 
     // The most base-3 digits whose strata are all distinct f32 strata.
-    const _: () = assert!(BASE3_STRATA <= crate::hash::MAX_STRATA);
-    const _: () = assert!(BASE3_STRATA * 3 > crate::hash::MAX_STRATA);
+    const _: () = assert!(BASE3_STRATA <= crate::primitives::MAX_STRATA);
+    const _: () = assert!(BASE3_STRATA * 3 > crate::primitives::MAX_STRATA);
 
     #[test]
     fn base3_strata_constant() {

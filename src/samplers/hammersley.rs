@@ -1,11 +1,11 @@
 use glam::Vec2;
 
-use crate::Error;
-use crate::hash::{
+use crate::primitives::{
     MAX_STRATA, hash_u32, owen_scramble_reversed, rand_u32, salt, stratum_to_unit_f32,
     u32_to_unit_f32,
 };
 use crate::sampler::{Sampler2D, debug_check_index};
+use crate::{Error, SamplerKind};
 
 /// The Hammersley set `(i / n, phi_2(i))`, randomised: scrambled.
 ///
@@ -88,7 +88,7 @@ impl Hammersley {
         }
         if n > Self::MAX_SAMPLES {
             return Err(Error::TooManySamples {
-                sampler: "hammersley",
+                sampler: SamplerKind::Hammersley,
                 requested: n as u64,
                 max: Self::MAX_SAMPLES as u64,
                 reason: "one point per column of n needs n distinct f32 columns in [0, 1), and f32 has 2^24 at equal spacing",

@@ -1,9 +1,9 @@
 use glam::Vec2;
 
-use crate::Error;
-use crate::hash::{Length, Permutation, hash_u32, rand_u32, salt};
-use crate::sampler::{Sampler2D, check_fill_len, debug_check_index, most_square_grid};
-use crate::samplers::regular::check_grid;
+use crate::primitives::{Permutation, hash_u32, rand_u32, salt};
+use crate::sampler::{Sampler2D, debug_check_index};
+use crate::samplers::grid::{Grid, GridPattern, fill_grid};
+use crate::{Error, SamplerKind};
 
 /// One uniformly random point in each cell of a `columns x rows` grid
 /// (stratified or "jittered" sampling).
@@ -25,7 +25,7 @@ use crate::samplers::regular::check_grid;
 ///
 /// # Cost
 ///
-/// One hash, one [`permute`](crate::hash::permute) (expected under two
+/// One hash, one [`permute`](crate::primitives::permute) (expected under two
 /// rounds) and two [`rand_u32`] per sample, plus two fixed-point stratum
 /// conversions; no division (the sampler stores reciprocals of its lengths).
 /// `fill` hashes the pattern once.
@@ -56,10 +56,7 @@ use crate::samplers::regular::check_grid;
 /// "Stochastic sampling in computer graphics", ACM TOG 5(1).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Jittered {
-    // Lengths carry their reciprocals, so no sample needs a division.
-    columns: Length,
-    rows: Length,
-    n: Length,
+    grid: Grid,
 }
 
 impl Jittered {
@@ -67,89 +64,85 @@ impl Jittered {
     ///
     /// # Errors
     ///
-    /// [`Error::ZeroSamples`] for `n = 0`; [`Error::TooManySamples`] when the
+    /// [`Error::ZeroSamples`] for `n = 0`; [`Error::GridTooFine`] when the
     /// grid would have more than 2^24 rows (a prime above 2^24, or twice one).
     pub fn new(n: u32) -> Result<Self, Error> {
-        if n == 0 {
-            return Err(Error::ZeroSamples);
-        }
-        let (columns, rows) = most_square_grid(n);
-        Self::with_grid(columns, rows)
+        Grid::most_square(SamplerKind::Jittered, n).map(|grid| Self { grid })
     }
 
     /// Jittered points on a `columns x rows` grid.
     ///
     /// # Errors
     ///
-    /// [`Error::ZeroGridSide`] if either side is 0; [`Error::TooManySamples`]
-    /// if a side exceeds 2^24 or `columns * rows` exceeds `u32::MAX`.
+    /// [`Error::ZeroGridSide`] if either side is 0; [`Error::GridTooFine`]
+    /// if a side exceeds 2^24; [`Error::TooManySamples`] if `columns * rows`
+    /// exceeds `u32::MAX`.
     pub fn with_grid(columns: u32, rows: u32) -> Result<Self, Error> {
-        check_grid("jittered", columns, rows)?;
-        Ok(Self {
-            columns: Length::new(columns),
-            rows: Length::new(rows),
-            n: Length::new(columns * rows),
-        })
+        Grid::with_sides(SamplerKind::Jittered, columns, rows).map(|grid| Self { grid })
     }
 
     /// Number of grid columns (strata along x).
     #[must_use]
     pub fn columns(&self) -> u32 {
-        self.columns.get()
+        self.grid.columns()
     }
 
     /// Number of grid rows (strata along y).
     #[must_use]
     pub fn rows(&self) -> u32 {
-        self.rows.get()
+        self.grid.rows()
+    }
+
+    fn pattern(&self, pattern: u32) -> JitteredPattern<'_> {
+        let seed = hash_u32(pattern);
+        JitteredPattern {
+            grid: &self.grid,
+            seed,
+            order: self.grid.n.permutation(seed ^ salt::ORDER),
+        }
     }
 }
 
-impl Jittered {
-    /// Sample `index` given the pattern's hash `seed` and order permutation:
-    /// the one formula `sample` and `fill` share. `POW2` promises a
-    /// power-of-two `n` (so grid sides too), for a branch-free `fill` loop.
-    #[inline(always)]
-    fn point<const POW2: bool>(&self, seed: u32, order: &Permutation, index: u32) -> Vec2 {
-        let cell = order.apply(index);
-        let (row, column) = self.columns.div_rem_in::<POW2>(cell);
-        Vec2::new(
-            self.columns
-                .stratum_to_unit_f32_in::<POW2>(column, rand_u32(cell, seed ^ salt::JITTER_X)),
-            self.rows
-                .stratum_to_unit_f32_in::<POW2>(row, rand_u32(cell, seed ^ salt::JITTER_Y)),
-        )
+/// One pattern of [`Jittered`]: its hash and the order of the cells.
+struct JitteredPattern<'a> {
+    grid: &'a Grid,
+    seed: u32,
+    order: Permutation,
+}
+
+impl GridPattern for JitteredPattern<'_> {
+    fn grid(&self) -> &Grid {
+        self.grid
     }
 
-    fn fill_in<const POW2: bool>(&self, seed: u32, order: &Permutation, out: &mut [Vec2]) {
-        for (index, point) in (0..).zip(out.iter_mut()) {
-            *point = self.point::<POW2>(seed, order, index);
-        }
+    #[inline(always)]
+    fn point<const POW2: bool>(&self, index: u32) -> Vec2 {
+        let cell = self.order.apply(index);
+        let (row, column) = self.grid.cell::<POW2>(cell);
+        Vec2::new(
+            self.grid
+                .columns
+                .stratum_to_unit_f32_in::<POW2>(column, rand_u32(cell, self.seed ^ salt::JITTER_X)),
+            self.grid
+                .rows
+                .stratum_to_unit_f32_in::<POW2>(row, rand_u32(cell, self.seed ^ salt::JITTER_Y)),
+        )
     }
 }
 
 impl Sampler2D for Jittered {
     #[inline]
     fn len(&self) -> u32 {
-        self.n.get()
+        self.grid.len()
     }
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
         debug_check_index(index, self.len());
-        let seed = hash_u32(pattern);
-        self.point::<false>(seed, &self.n.permutation(seed ^ salt::ORDER), index)
+        self.pattern(pattern).point::<false>(index)
     }
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        check_fill_len(out.len(), self.len());
-        // The pattern hash and the permutation's rotation once per set.
-        let seed = hash_u32(pattern);
-        let order = self.n.permutation(seed ^ salt::ORDER);
-        if self.n.is_power_of_two() {
-            self.fill_in::<true>(seed, &order, out);
-        } else {
-            self.fill_in::<false>(seed, &order, out);
-        }
+        fill_grid(&self.pattern(pattern), out);
     }
 }

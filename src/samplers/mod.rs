@@ -2,6 +2,8 @@
 //! one by name at run time (tools, configuration files, command lines).
 
 mod correlated_multi_jittered;
+mod digital;
+mod grid;
 mod halton;
 mod hammersley;
 mod jittered;

@@ -1,11 +1,9 @@
 use glam::Vec2;
 
-use crate::Error;
-use crate::hash::{Length, Permutation, hash_combine, hash_u32, rand_u32, salt};
-use crate::sampler::{
-    SMALL_TABLE, Sampler2D, check_fill_len, debug_check_index, most_square_grid, small_table,
-};
-use crate::samplers::n_rooks::check_rook_count;
+use crate::primitives::{Permutation, hash_combine, hash_u32, salt};
+use crate::sampler::{SMALL_TABLE, Sampler2D, debug_check_index, small_table};
+use crate::samplers::grid::{Grid, GridPattern, fill_grid};
+use crate::{Error, SamplerKind};
 
 /// Multi-jittered sampling: jittered on a coarse `columns x rows` grid and
 /// n-rooks on the fine `n x n` grid at the same time.
@@ -26,7 +24,7 @@ use crate::samplers::n_rooks::check_rook_count;
 /// # Cost
 ///
 /// One hash of the pattern, two [`hash_combine`] for the per-column and
-/// per-row shuffles, three [`permute`](crate::hash::permute) (expected under
+/// per-row shuffles, three [`permute`](crate::primitives::permute) (expected under
 /// two rounds each) and two [`rand_u32`] per sample; no division (the sampler
 /// stores reciprocals of its lengths). `fill` hashes the pattern once and
 /// tabulates the per-column and per-row shuffle seeds (for grids up to 256 x
@@ -63,15 +61,12 @@ use crate::samplers::n_rooks::check_rook_count;
 /// permutations: column `c`'s shuffle is `permute(_, rows, hash(seed, c))`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct MultiJittered {
-    // Lengths carry their reciprocals, so no sample needs a division.
-    columns: Length,
-    rows: Length,
-    n: Length,
+    grid: Grid,
 }
 
 impl MultiJittered {
     /// The largest `n` accepted: 2^24, the number of distinct f32 strata.
-    pub const MAX_SAMPLES: u32 = crate::hash::MAX_STRATA;
+    pub const MAX_SAMPLES: u32 = crate::primitives::MAX_STRATA;
 
     /// A multi-jittered set of `n` points.
     ///
@@ -80,126 +75,106 @@ impl MultiJittered {
     /// [`Error::ZeroSamples`] for `n = 0`; [`Error::TooManySamples`] above
     /// [`MultiJittered::MAX_SAMPLES`].
     pub fn new(n: u32) -> Result<Self, Error> {
-        check_rook_count("multi-jittered", n)?;
-        let (columns, rows) = most_square_grid(n);
-        Ok(Self {
-            columns: Length::new(columns),
-            rows: Length::new(rows),
-            n: Length::new(n),
-        })
+        Grid::latin(SamplerKind::MultiJittered, n).map(|grid| Self { grid })
     }
 
     /// Number of coarse grid columns.
     #[must_use]
     pub fn columns(&self) -> u32 {
-        self.columns.get()
+        self.grid.columns()
     }
 
     /// Number of coarse grid rows.
     #[must_use]
     pub fn rows(&self) -> u32 {
-        self.rows.get()
+        self.grid.rows()
+    }
+}
+
+/// One pattern of [`MultiJittered`]: its hash, the order of the cells, and
+/// each coarse column's and row's shuffle pattern (`column_pattern(column)`
+/// shuffles that column's sub-columns, `row_pattern(row)` that row's
+/// sub-rows), computed or looked up.
+struct MultiJitteredPattern<'a, C, R> {
+    grid: &'a Grid,
+    seed: u32,
+    order: Permutation,
+    column_pattern: C,
+    row_pattern: R,
+}
+
+impl<C: Fn(u32) -> u32, R: Fn(u32) -> u32> GridPattern for MultiJitteredPattern<'_, C, R> {
+    fn grid(&self) -> &Grid {
+        self.grid
+    }
+
+    #[inline(always)]
+    fn point<const POW2: bool>(&self, index: u32) -> Vec2 {
+        let grid = self.grid;
+        let cell = self.order.apply(index);
+        let (row, column) = grid.cell::<POW2>(cell);
+        // Coarse column `column` holds one point per coarse row: the column's
+        // own shuffle of its rows picks which fine column each point takes.
+        // Likewise for rows. Distinct shuffles per column make it Chiu et al.'s
+        // (uncorrelated) multi-jitter.
+        let sub_column = grid
+            .rows
+            .permutation_in::<POW2>((self.column_pattern)(column))
+            .apply(row);
+        let sub_row = grid
+            .columns
+            .permutation_in::<POW2>((self.row_pattern)(row))
+            .apply(column);
+        grid.latin_point::<POW2>(cell, (row, column), (sub_column, sub_row), self.seed)
     }
 }
 
 impl MultiJittered {
-    /// Sample `index` given the pattern's hash `seed`, its order permutation
-    /// and the per-column and per-row shuffle patterns (`column_pattern(column)`
-    /// shuffles that column's sub-columns, `row_pattern(row)` that row's
-    /// sub-rows): the one formula `sample` and `fill` share. `POW2` promises
-    /// a power-of-two `n` (so grid sides too), for a branch-free `fill` loop.
-    #[inline(always)]
-    fn point<const POW2: bool>(
+    fn pattern(
         &self,
-        seed: u32,
-        order: &Permutation,
-        column_pattern: impl Fn(u32) -> u32,
-        row_pattern: impl Fn(u32) -> u32,
-        index: u32,
-    ) -> Vec2 {
-        let cell = order.apply(index);
-        let (row, column) = self.columns.div_rem_in::<POW2>(cell);
-        // Coarse column `column` spans fine columns [column * rows, (column +
-        // 1) * rows) and holds one point per coarse row: the column's own
-        // shuffle of its rows picks which fine column each point takes.
-        // Likewise for rows. Distinct shuffles per column make it Chiu et al.'s
-        // (uncorrelated) multi-jitter.
-        let sub_column = self
-            .rows
-            .permutation_in::<POW2>(column_pattern(column))
-            .apply(row);
-        let sub_row = self
-            .columns
-            .permutation_in::<POW2>(row_pattern(row))
-            .apply(column);
-        let (columns, rows) = (self.columns.get(), self.rows.get());
-        Vec2::new(
-            self.n.stratum_to_unit_f32_in::<POW2>(
-                column * rows + sub_column,
-                rand_u32(cell, seed ^ salt::JITTER_X),
-            ),
-            self.n.stratum_to_unit_f32_in::<POW2>(
-                row * columns + sub_row,
-                rand_u32(cell, seed ^ salt::JITTER_Y),
-            ),
-        )
+        pattern: u32,
+    ) -> MultiJitteredPattern<'_, impl Fn(u32) -> u32, impl Fn(u32) -> u32> {
+        let seed = hash_u32(pattern);
+        MultiJitteredPattern {
+            grid: &self.grid,
+            seed,
+            order: self.grid.n.permutation(seed ^ salt::ORDER),
+            column_pattern: move |column| hash_combine(seed ^ salt::SHUFFLE_X, column),
+            row_pattern: move |row| hash_combine(seed ^ salt::SHUFFLE_Y, row),
+        }
     }
 }
 
 impl Sampler2D for MultiJittered {
     #[inline]
     fn len(&self) -> u32 {
-        self.n.get()
+        self.grid.len()
     }
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
         debug_check_index(index, self.len());
-        let seed = hash_u32(pattern);
-        self.point::<false>(
-            seed,
-            &self.n.permutation(seed ^ salt::ORDER),
-            |column| hash_combine(seed ^ salt::SHUFFLE_X, column),
-            |row| hash_combine(seed ^ salt::SHUFFLE_Y, row),
-            index,
-        )
+        self.pattern(pattern).point::<false>(index)
     }
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        check_fill_len(out.len(), self.len());
-        let seed = hash_u32(pattern);
-        let order = self.n.permutation(seed ^ salt::ORDER);
-        let (columns, rows) = (self.columns.get(), self.rows.get());
+        let computed = self.pattern(pattern);
+        let (columns, rows) = (self.grid.columns(), self.grid.rows());
         if columns as usize <= SMALL_TABLE && rows as usize <= SMALL_TABLE {
             // Each column's and each row's shuffle pattern costs two hashes;
             // there are only `columns + rows` of them, so tabulate them once.
-            let column_patterns = small_table(columns, |column| {
-                hash_combine(seed ^ salt::SHUFFLE_X, column)
-            });
-            let row_patterns = small_table(rows, |row| hash_combine(seed ^ salt::SHUFFLE_Y, row));
-            let (column_pattern, row_pattern) = (
-                |column: u32| column_patterns[column as usize],
-                |row: u32| row_patterns[row as usize],
-            );
-            if self.n.is_power_of_two() {
-                for (index, point) in (0..).zip(out.iter_mut()) {
-                    *point = self.point::<true>(seed, &order, column_pattern, row_pattern, index);
-                }
-            } else {
-                for (index, point) in (0..).zip(out.iter_mut()) {
-                    *point = self.point::<false>(seed, &order, column_pattern, row_pattern, index);
-                }
-            }
+            let column_patterns = small_table(columns, &computed.column_pattern);
+            let row_patterns = small_table(rows, &computed.row_pattern);
+            let tabled = MultiJitteredPattern {
+                column_pattern: |column: u32| column_patterns[column as usize],
+                row_pattern: |row: u32| row_patterns[row as usize],
+                grid: computed.grid,
+                seed: computed.seed,
+                order: computed.order,
+            };
+            fill_grid(&tabled, out);
         } else {
-            for (index, point) in (0..).zip(out.iter_mut()) {
-                *point = self.point::<false>(
-                    seed,
-                    &order,
-                    |column| hash_combine(seed ^ salt::SHUFFLE_X, column),
-                    |row| hash_combine(seed ^ salt::SHUFFLE_Y, row),
-                    index,
-                );
-            }
+            fill_grid(&computed, out);
         }
     }
 }

@@ -1,8 +1,9 @@
 use glam::Vec2;
 
-use crate::Error;
-use crate::hash::{Length, MAX_STRATA, Permutation, hash_u32, rand_u32, salt};
-use crate::sampler::{Sampler2D, check_fill_len, debug_check_index};
+use crate::primitives::{MAX_STRATA, Permutation, hash_u32, rand_u32, salt};
+use crate::sampler::{Sampler2D, debug_check_index};
+use crate::samplers::grid::{Grid, GridPattern, fill_grid};
+use crate::{Error, SamplerKind};
 
 /// N-rooks (Latin hypercube) sampling: one point in every row and every
 /// column of the `n x n` grid, like `n` rooks that cannot take each other.
@@ -19,7 +20,7 @@ use crate::sampler::{Sampler2D, check_fill_len, debug_check_index};
 ///
 /// # Cost
 ///
-/// One hash, two [`permute`](crate::hash::permute) (expected under two
+/// One hash, two [`permute`](crate::primitives::permute) (expected under two
 /// rounds each) and two [`rand_u32`] per sample, plus two fixed-point stratum
 /// conversions; no division (the sampler stores the reciprocal of `n`).
 /// `fill` hashes the pattern once.
@@ -51,8 +52,8 @@ use crate::sampler::{Sampler2D, check_fill_len, debug_check_index};
 /// permutations instead of a shuffled table.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct NRooks {
-    // Carries its reciprocal, so no sample needs a division.
-    n: Length,
+    // Only `n` matters: the rook condition is on the n x n fine grid.
+    grid: Grid,
 }
 
 /// The statisticians' name for the same set.
@@ -69,56 +70,44 @@ impl NRooks {
     /// [`Error::ZeroSamples`] for `n = 0`; [`Error::TooManySamples`] above
     /// [`NRooks::MAX_SAMPLES`].
     pub fn new(n: u32) -> Result<Self, Error> {
-        check_rook_count("n-rooks", n)?;
-        Ok(Self { n: Length::new(n) })
+        Grid::latin(SamplerKind::NRooks, n).map(|grid| Self { grid })
+    }
+
+    fn pattern(&self, pattern: u32) -> NRooksPattern<'_> {
+        let seed = hash_u32(pattern);
+        NRooksPattern {
+            grid: &self.grid,
+            seed,
+            columns: self.grid.n.permutation(seed ^ salt::SHUFFLE_X),
+            rows: self.grid.n.permutation(seed ^ salt::SHUFFLE_Y),
+        }
     }
 }
 
-/// Validation shared by the samplers that cut each axis into `n` strata.
-pub(crate) fn check_rook_count(sampler: &'static str, n: u32) -> Result<(), Error> {
-    if n == 0 {
-        return Err(Error::ZeroSamples);
-    }
-    if n > MAX_STRATA {
-        return Err(Error::TooManySamples {
-            sampler,
-            requested: n as u64,
-            max: MAX_STRATA as u64,
-            reason: "the rook condition needs n distinct f32 columns in [0, 1), and f32 has 2^24 at equal spacing",
-        });
-    }
-    Ok(())
+/// One pattern of [`NRooks`]: its hash and its column and row permutations.
+struct NRooksPattern<'a> {
+    grid: &'a Grid,
+    seed: u32,
+    columns: Permutation,
+    rows: Permutation,
 }
 
-impl NRooks {
-    /// Sample `index` given the pattern's hash `seed` and its column and row
-    /// permutations: the one formula `sample` and `fill` share. `POW2`
-    /// promises a power-of-two `n`, for a branch-free `fill` loop.
+impl GridPattern for NRooksPattern<'_> {
+    fn grid(&self) -> &Grid {
+        self.grid
+    }
+
     #[inline(always)]
-    fn point<const POW2: bool>(
-        &self,
-        seed: u32,
-        columns: &Permutation,
-        rows: &Permutation,
-        index: u32,
-    ) -> Vec2 {
+    fn point<const POW2: bool>(&self, index: u32) -> Vec2 {
         // Column and row are two independent permutations of the index, so
         // index order says nothing about position and padded dimension pairs
         // that share an index stay decorrelated.
-        let column = columns.apply(index);
-        let row = rows.apply(index);
+        let column = self.columns.apply(index);
+        let row = self.rows.apply(index);
+        let n = self.grid.n;
         Vec2::new(
-            self.n
-                .stratum_to_unit_f32_in::<POW2>(column, rand_u32(index, seed ^ salt::JITTER_X)),
-            self.n
-                .stratum_to_unit_f32_in::<POW2>(row, rand_u32(index, seed ^ salt::JITTER_Y)),
-        )
-    }
-
-    fn permutations(&self, seed: u32) -> (Permutation, Permutation) {
-        (
-            self.n.permutation(seed ^ salt::SHUFFLE_X),
-            self.n.permutation(seed ^ salt::SHUFFLE_Y),
+            n.stratum_to_unit_f32_in::<POW2>(column, rand_u32(index, self.seed ^ salt::JITTER_X)),
+            n.stratum_to_unit_f32_in::<POW2>(row, rand_u32(index, self.seed ^ salt::JITTER_Y)),
         )
     }
 }
@@ -126,30 +115,16 @@ impl NRooks {
 impl Sampler2D for NRooks {
     #[inline]
     fn len(&self) -> u32 {
-        self.n.get()
+        self.grid.len()
     }
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
         debug_check_index(index, self.len());
-        let seed = hash_u32(pattern);
-        let (columns, rows) = self.permutations(seed);
-        self.point::<false>(seed, &columns, &rows, index)
+        self.pattern(pattern).point::<false>(index)
     }
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        check_fill_len(out.len(), self.len());
-        // The pattern hash and both rotations once per set.
-        let seed = hash_u32(pattern);
-        let (columns, rows) = self.permutations(seed);
-        if self.n.is_power_of_two() {
-            for (index, point) in (0..).zip(out.iter_mut()) {
-                *point = self.point::<true>(seed, &columns, &rows, index);
-            }
-        } else {
-            for (index, point) in (0..).zip(out.iter_mut()) {
-                *point = self.point::<false>(seed, &columns, &rows, index);
-            }
-        }
+        fill_grid(&self.pattern(pattern), out);
     }
 }

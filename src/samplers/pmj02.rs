@@ -1,9 +1,9 @@
 use glam::Vec2;
 
 use crate::Error;
-use crate::hash::owen_scramble;
+use crate::primitives::owen_scramble;
 use crate::sampler::{Sampler2D, check_fill_len};
-use crate::samplers::sobol::{OwenSeeds, bits_to_point, fill_in_lanes, scrambled_bits};
+use crate::samplers::digital::{OwenSeeds, bits_to_point, fill_in_lanes, scrambled_bits};
 
 /// Progressive multi-jittered (0,2) sequence (pmj02, Christensen, Kensler &
 /// Kilpatrick 2018), generated in O(1) per sample with no tables.
@@ -33,7 +33,7 @@ use crate::samplers::sobol::{OwenSeeds, bits_to_point, fill_in_lanes, scrambled_
 /// - The index is shuffled and the coordinates Owen-scrambled exactly as in
 ///   [`Sobol`](crate::Sobol) (Burley 2020), so dimension pairs decorrelate
 ///   the same way: hash the pair into the pattern with
-///   [`pattern_seed`](crate::hash::pattern_seed).
+///   [`pattern_seed`](crate::primitives::pattern_seed).
 ///
 /// No per-pattern or global table is needed. At power-of-two sizes the
 /// point sets have the same distribution as Owen-scrambled [`Sobol`]
@@ -219,7 +219,7 @@ mod tests {
 
     #[test]
     fn pmj02_is_a_02_sequence_up_to_2_to_the_32() {
-        assert!(crate::samplers::sobol::tests::is_02_sequence(
+        assert!(crate::samplers::digital::tests::is_02_sequence(
             |j| stirling_x(1 << j),
             |j| stirling_y(1 << j),
         ));

@@ -1,7 +1,7 @@
 use glam::Vec2;
 
 use crate::Error;
-use crate::hash::{hash_combine, hash_u32, salt, u32_to_unit_f32};
+use crate::primitives::{hash_combine, hash_u32, salt, u32_to_unit_f32};
 use crate::sampler::{Sampler2D, check_fill_len, debug_check_index};
 
 /// Independent uniform points: the baseline every other sampler must beat.

@@ -1,8 +1,9 @@
 use glam::Vec2;
 
-use crate::Error;
-use crate::hash::{Length, MAX_STRATA, Permutation, hash_u32, salt};
-use crate::sampler::{Sampler2D, check_fill_len, debug_check_index, most_square_grid};
+use crate::primitives::{Permutation, hash_u32, salt};
+use crate::sampler::{Sampler2D, debug_check_index};
+use crate::samplers::grid::{Grid, GridPattern, fill_grid};
+use crate::{Error, SamplerKind};
 
 /// Cell centres of a `columns x rows` grid: the deterministic baseline that
 /// aliases.
@@ -21,7 +22,7 @@ use crate::sampler::{Sampler2D, check_fill_len, debug_check_index, most_square_g
 ///
 /// # Cost
 ///
-/// One hash and one [`permute`](crate::hash::permute) (expected under two
+/// One hash and one [`permute`](crate::primitives::permute) (expected under two
 /// rounds) per sample, plus two fixed-point stratum conversions; no division
 /// (the sampler stores reciprocals of its lengths). `fill` hashes the pattern
 /// once.
@@ -49,92 +50,72 @@ use crate::sampler::{Sampler2D, check_fill_len, debug_check_index, most_square_g
 /// (why regular grids alias); Shirley 1991 uses it as the baseline.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Regular {
-    // Lengths carry their reciprocals, so no sample needs a division.
-    columns: Length,
-    rows: Length,
-    n: Length,
+    grid: Grid,
 }
 
 impl Regular {
-    /// A grid of `n` cells, the most square factorisation of `n`.
+    /// `n` cell centres on the most square grid that has `n` cells.
     ///
     /// # Errors
     ///
-    /// [`Error::ZeroSamples`] for `n = 0`; [`Error::TooManySamples`] when the
+    /// [`Error::ZeroSamples`] for `n = 0`; [`Error::GridTooFine`] when the
     /// grid would have more than 2^24 rows (a prime above 2^24, or twice one).
     pub fn new(n: u32) -> Result<Self, Error> {
-        if n == 0 {
-            return Err(Error::ZeroSamples);
-        }
-        let (columns, rows) = most_square_grid(n);
-        Self::with_grid(columns, rows)
+        Grid::most_square(SamplerKind::Regular, n).map(|grid| Self { grid })
     }
 
-    /// A `columns x rows` grid.
+    /// Cell centres of a `columns x rows` grid.
     ///
     /// # Errors
     ///
-    /// [`Error::ZeroGridSide`] if either side is 0; [`Error::TooManySamples`]
-    /// if a side exceeds 2^24 or `columns * rows` exceeds `u32::MAX`.
+    /// [`Error::ZeroGridSide`] if either side is 0; [`Error::GridTooFine`]
+    /// if a side exceeds 2^24; [`Error::TooManySamples`] if `columns * rows`
+    /// exceeds `u32::MAX`.
     pub fn with_grid(columns: u32, rows: u32) -> Result<Self, Error> {
-        check_grid("regular", columns, rows)?;
-        Ok(Self {
-            columns: Length::new(columns),
-            rows: Length::new(rows),
-            n: Length::new(columns * rows),
-        })
+        Grid::with_sides(SamplerKind::Regular, columns, rows).map(|grid| Self { grid })
     }
 
-    /// Number of grid columns (cells along x).
+    /// Number of grid columns.
     #[must_use]
     pub fn columns(&self) -> u32 {
-        self.columns.get()
+        self.grid.columns()
     }
 
-    /// Number of grid rows (cells along y).
+    /// Number of grid rows.
     #[must_use]
     pub fn rows(&self) -> u32 {
-        self.rows.get()
+        self.grid.rows()
+    }
+
+    fn pattern(&self, pattern: u32) -> RegularPattern<'_> {
+        RegularPattern {
+            grid: &self.grid,
+            order: self.grid.n.permutation(hash_u32(pattern) ^ salt::ORDER),
+        }
     }
 }
 
-/// Validation shared by the grid-shaped samplers (regular, jittered).
-pub(crate) fn check_grid(sampler: &'static str, columns: u32, rows: u32) -> Result<(), Error> {
-    if columns == 0 || rows == 0 {
-        return Err(Error::ZeroGridSide { columns, rows });
-    }
-    let cells = columns as u64 * rows as u64;
-    if columns > MAX_STRATA || rows > MAX_STRATA {
-        return Err(Error::TooManySamples {
-            sampler,
-            requested: cells,
-            max: u32::MAX as u64,
-            reason: "its grid would have a side above 2^24 cells, which f32 coordinates cannot tell apart (the most square grid of a prime n is 1 x n); pick an n with a divisor near its square root",
-        });
-    }
-    if cells > u32::MAX as u64 {
-        return Err(Error::TooManySamples {
-            sampler,
-            requested: cells,
-            max: u32::MAX as u64,
-            reason: "sample indices are u32",
-        });
-    }
-    Ok(())
+/// One pattern of [`Regular`]: only the order in which indices visit cells.
+struct RegularPattern<'a> {
+    grid: &'a Grid,
+    order: Permutation,
 }
 
-impl Regular {
-    /// Sample `index` given the pattern's order permutation: the one formula
-    /// `sample` and `fill` share. `POW2` promises a power-of-two `n` (so
-    /// grid sides too), for a branch-free `fill` loop.
+impl GridPattern for RegularPattern<'_> {
+    fn grid(&self) -> &Grid {
+        self.grid
+    }
+
     #[inline(always)]
-    fn point<const POW2: bool>(&self, order: &Permutation, index: u32) -> Vec2 {
-        let cell = order.apply(index);
-        let (row, column) = self.columns.div_rem_in::<POW2>(cell);
+    fn point<const POW2: bool>(&self, index: u32) -> Vec2 {
+        let cell = self.order.apply(index);
+        let (row, column) = self.grid.cell::<POW2>(cell);
         // Half-way bits put the point at the cell's centre, to within 2^-24.
         Vec2::new(
-            self.columns.stratum_to_unit_f32_in::<POW2>(column, 1 << 31),
-            self.rows.stratum_to_unit_f32_in::<POW2>(row, 1 << 31),
+            self.grid
+                .columns
+                .stratum_to_unit_f32_in::<POW2>(column, 1 << 31),
+            self.grid.rows.stratum_to_unit_f32_in::<POW2>(row, 1 << 31),
         )
     }
 }
@@ -142,27 +123,16 @@ impl Regular {
 impl Sampler2D for Regular {
     #[inline]
     fn len(&self) -> u32 {
-        self.n.get()
+        self.grid.len()
     }
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
         debug_check_index(index, self.len());
-        self.point::<false>(&self.n.permutation(hash_u32(pattern) ^ salt::ORDER), index)
+        self.pattern(pattern).point::<false>(index)
     }
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        check_fill_len(out.len(), self.len());
-        // The permutation (its pattern hash and rotation) once per set.
-        let order = self.n.permutation(hash_u32(pattern) ^ salt::ORDER);
-        if self.n.is_power_of_two() {
-            for (index, point) in (0..).zip(out.iter_mut()) {
-                *point = self.point::<true>(&order, index);
-            }
-        } else {
-            for (index, point) in (0..).zip(out.iter_mut()) {
-                *point = self.point::<false>(&order, index);
-            }
-        }
+        fill_grid(&self.pattern(pattern), out);
     }
 }

@@ -1,0 +1,31 @@
+//! The building blocks every sampler is made of, one file per idea, and the
+//! only source of randomness in wellspread.
+//!
+//! - Hashing and pattern seeds: [`hash_u32`], [`hash_combine`],
+//!   [`pattern_seed`], [`rand_u32`].
+//! - Permutations of `[0, len)`: [`permute`].
+//! - The unit conversion from bits to `[0, 1)`: [`u32_to_unit_f32`],
+//!   [`stratum_to_unit_f32`], with [`UNIT_BITS`], [`MAX_STRATA`] and
+//!   [`ONE_MINUS_EPSILON`].
+//! - Owen scrambling for the base-2 sequences: [`radical_inverse_2`],
+//!   [`owen_scramble`], [`owen_scramble_reversed`].
+//! - Invariant division (crate-private): the reciprocals samplers store so
+//!   that no sample divides.
+//!
+//! Every sample is a pure function of `(index, pattern)` built from these,
+//! so it is the same on every thread, machine and run. Each function names
+//! its source, and each magic constant says why it is there.
+
+mod division;
+mod hash;
+mod owen;
+mod permutation;
+mod unit;
+
+pub(crate) use division::InvariantDivisor;
+pub(crate) use hash::salt;
+pub use hash::{hash_combine, hash_u32, pattern_seed, rand_u32};
+pub use owen::{owen_scramble, owen_scramble_reversed, radical_inverse_2};
+pub(crate) use permutation::Permutation;
+pub use permutation::permute;
+pub use unit::{MAX_STRATA, ONE_MINUS_EPSILON, UNIT_BITS, stratum_to_unit_f32, u32_to_unit_f32};
