@@ -26,7 +26,7 @@ use crate::{Error, SamplerKind};
 /// # Cost
 ///
 /// One hash of the pattern, three [`permute`](crate::primitives::permute)
-/// (expected under two rounds each) and two [`rand_u32`] per sample, plus two
+/// (expected under two rounds each) and two [`rand_u32`](crate::primitives::rand_u32) per sample, plus two
 /// fixed-point stratum conversions; no division (the sampler stores
 /// reciprocals of its lengths). `fill` hashes the pattern once and tabulates
 /// the two shared shuffles (for grids up to 256 x 256), leaving one permute

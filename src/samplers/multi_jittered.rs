@@ -25,7 +25,7 @@ use crate::{Error, SamplerKind};
 ///
 /// One hash of the pattern, two [`hash_combine`] for the per-column and
 /// per-row shuffles, three [`permute`](crate::primitives::permute) (expected under
-/// two rounds each) and two [`rand_u32`] per sample; no division (the sampler
+/// two rounds each) and two [`rand_u32`](crate::primitives::rand_u32) per sample; no division (the sampler
 /// stores reciprocals of its lengths). `fill` hashes the pattern once and
 /// tabulates the per-column and per-row shuffle seeds (for grids up to 256 x
 /// 256); the three permutes per sample remain.

@@ -19,7 +19,7 @@ use crate::samplers::digital::{OwenSeeds, bits_to_point, fill_in_lanes, scramble
 ///    Pascal matrix mod 2 applied to the digits of `s`, computed without
 ///    tables by five xor-shift steps (see `pascal_reversed` in the source).
 /// 3. Each coordinate is Owen-scrambled with its own seed
-///    ([`owen_scramble_reversed`]) and truncated to 24 bits by
+///    ([`owen_scramble_reversed`](crate::primitives::owen_scramble_reversed)) and truncated to 24 bits by
 ///    [`u32_to_unit_f32`].
 ///
 /// All three seeds are hashes of `pattern`. For further dimension pairs
