@@ -20,7 +20,7 @@ use crate::samplers::digital::{OwenSeeds, bits_to_point, fill_in_lanes, scramble
 ///    tables by five xor-shift steps (see `pascal_reversed` in the source).
 /// 3. Each coordinate is Owen-scrambled with its own seed
 ///    ([`owen_scramble_reversed`](crate::primitives::owen_scramble_reversed)) and truncated to 24 bits by
-///    [`u32_to_unit_f32`].
+///    [`u32_to_unit_f32`](crate::primitives::u32_to_unit_f32).
 ///
 /// All three seeds are hashes of `pattern`. For further dimension pairs
 /// (lens, time, light) pass a pattern with the pair's number hashed in,
@@ -46,7 +46,7 @@ use crate::samplers::digital::{OwenSeeds, bits_to_point, fill_in_lanes, scramble
 ///
 /// # Cost
 ///
-/// Four [`hash_u32`] of the pattern (once per [`fill`](Sampler2D::fill)),
+/// Four [`hash_u32`](crate::primitives::hash_u32) of the pattern (once per [`fill`](Sampler2D::fill)),
 /// three Owen-scramble hashes of four multiply-xor steps, four bit
 /// reversals and five xor-shift steps per sample: no loop, no table, no
 /// division, about 160 x86-64 instructions for `sample`. `fill` runs eight
