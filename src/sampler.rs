@@ -2,6 +2,8 @@
 
 use glam::Vec2;
 
+use crate::simd::Isa;
+
 /// A set of `len()` well-distributed points in `[0, 1)^2`, with random access.
 ///
 /// Sample `index` of pattern `pattern` is a pure function of the two: no
@@ -56,6 +58,14 @@ pub trait Sampler2D {
     }
 }
 
+/// `fill` on a chosen instruction set: what every sampler's
+/// [`Sampler2D::fill`] runs with [`Isa::best`], and what the tests run on
+/// every instruction set the CPU has.
+pub(crate) trait FillOn {
+    /// [`Sampler2D::fill`] on `isa`.
+    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]);
+}
+
 /// Entries of the stack tables some `fill` overrides build for per-row or
 /// per-column work (1 KiB of u32 each): enough for the coarse grid of every
 /// n up to 65536, small enough for any stack.
@@ -65,9 +75,9 @@ pub(crate) const SMALL_TABLE: usize = 256;
 /// entries (`len <= SMALL_TABLE`), for the per-row and per-column work a
 /// `fill` hoists out of its loop.
 #[inline(always)]
-pub(crate) fn small_table(len: u32, f: impl Fn(u32) -> u32) -> [u32; SMALL_TABLE] {
+pub(crate) fn small_table<T: Copy + Default>(len: u32, f: impl Fn(u32) -> T) -> [T; SMALL_TABLE] {
     debug_assert!(len as usize <= SMALL_TABLE);
-    let mut table = [0; SMALL_TABLE];
+    let mut table = [T::default(); SMALL_TABLE];
     for (i, entry) in (0..len).zip(table.iter_mut()) {
         *entry = f(i);
     }

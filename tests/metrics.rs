@@ -864,7 +864,7 @@ proptest! {
             Some(Error::ZeroGridSide { columns, rows })
         } else {
             want.or_else(|| {
-                (points.len() % (columns * rows) as usize != 0).then_some(Error::GridDoesNotDivide {
+                (!points.len().is_multiple_of((columns * rows) as usize)).then_some(Error::GridDoesNotDivide {
                     columns,
                     rows,
                     n: points.len(),

@@ -1,14 +1,16 @@
 //! Measurements of `hash::permute`: that it is a bijection, and that the
 //! 2^32 patterns reach the permutations of short lengths often and evenly.
 //!
-//! Kensler's 2013 hash failed every reach and uniformity test below (a
-//! length of 4 reached 8 of its 24 permutations, `NRooks` at n = 4 gave one
-//! rook arrangement for every pattern). Patterns are `hash_u32(k)` for
-//! consecutive `k`, so every test is deterministic; each states the chance
-//! that a truly uniform permutation family would fail it.
+//! Lengths 2 to 8 are exact shuffles, proven over all 2^32 patterns; longer
+//! lengths are measured. Kensler's 2013 hash failed every reach and
+//! uniformity test below (a length of 4 reached 8 of its 24 permutations,
+//! `NRooks` at n = 4 gave one rook arrangement for every pattern). Patterns
+//! are `hash_u32(k)` for consecutive `k`, so every test is deterministic;
+//! each statistical one states the chance that a truly uniform permutation
+//! family would fail it.
 
 use std::collections::HashSet;
-use wellspread::hash::{hash_u32, permute};
+use wellspread::primitives::{hash_u32, permute};
 use wellspread::{CorrelatedMultiJittered, MultiJittered, NRooks, Sampler2D};
 
 /// The chi-square value a uniform family exceeds with probability 1e-6 for
@@ -113,6 +115,61 @@ fn short_lengths_reach_every_permutation_uniformly() {
             stat < critical,
             "len {len}: chi-square {stat} >= {critical}"
         );
+    }
+}
+
+/// The inverse of `hash_u32` (lowbias32: xorshifts and odd multipliers are
+/// each invertible), so that a test can pick the pattern with a given key.
+fn unhash_u32(mut x: u32) -> u32 {
+    // The inverse of an odd multiplier modulo 2^32, by Newton's iteration.
+    let inverse = |m: u32| {
+        let mut y = m;
+        for _ in 0..5 {
+            y = y.wrapping_mul(2u32.wrapping_sub(m.wrapping_mul(y)));
+        }
+        y
+    };
+    x ^= x >> 16;
+    x = x.wrapping_mul(inverse(0x846c_a68b));
+    x ^= (x >> 15) ^ (x >> 30);
+    x = x.wrapping_mul(inverse(0x7feb_352d));
+    x ^ (x >> 16)
+}
+
+/// Lengths 2 to 8 are exact Fisher-Yates shuffles: the key of pattern `p`
+/// is `hash_u32(p ^ 0x9e37_79b9)`, a bijection, and the key's rank
+/// `floor(key * len! / 2^32)` picks the permutation, so each of the `len!`
+/// permutations owns one block of `floor(2^32 / len!)` or
+/// `ceil(2^32 / len!)` consecutive keys, and so as many patterns. Checked
+/// over all 2^32 patterns without enumerating them: for every rank, the
+/// patterns at both ends of its key block and one inside it (found through
+/// the inverse hash) give the same permutation, the blocks' sizes are as
+/// stated, and the `len!` blocks give `len!` distinct permutations.
+#[test]
+fn short_lengths_are_exactly_uniform_over_all_patterns() {
+    assert_eq!(unhash_u32(hash_u32(0x1234_5678)), 0x1234_5678);
+    let pattern_of_key = |key: u64| unhash_u32(key as u32) ^ 0x9e37_79b9;
+    for len in 2..=8u32 {
+        let total = factorial(len);
+        let first_key = |r: u64| (r << 32).div_ceil(total);
+        let mut seen = vec![false; total as usize];
+        for r in 0..total {
+            let (first, last) = (first_key(r), first_key(r + 1) - 1);
+            let size = last - first + 1;
+            assert!(size == (1 << 32) / total || size == (1 << 32) / total + 1);
+            let rank_of = |key: u64| rank(&permutation(len, pattern_of_key(key)));
+            let mid = first + hash_u32(r as u32) as u64 % size;
+            let ranks = [rank_of(first), rank_of(mid), rank_of(last)];
+            assert!(
+                ranks.iter().all(|&x| x == ranks[0]),
+                "len {len} block {r}: {ranks:?}"
+            );
+            assert!(
+                !seen[ranks[0]],
+                "len {len}: block {r} repeats a permutation"
+            );
+            seen[ranks[0]] = true;
+        }
     }
 }
 

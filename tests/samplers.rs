@@ -198,7 +198,7 @@ fn check_most_square(kind: SamplerKind, n: u32) -> Result<(), TestCaseError> {
         prop_assert!(columns <= rows, "{kind} n = {n}: {columns} x {rows}");
         for d in columns + 1..=n.isqrt() {
             prop_assert!(
-                n % d != 0,
+                !n.is_multiple_of(d),
                 "{kind} n = {n}: {columns} x {rows}, but {d} divides n"
             );
         }
@@ -363,7 +363,10 @@ fn must_accept(kind: SamplerKind, n: u32) -> Option<bool> {
     }
     match kind {
         SamplerKind::Regular | SamplerKind::Jittered => {
-            let columns = (1..=n.isqrt()).rev().find(|d| n % d == 0).unwrap();
+            let columns = (1..=n.isqrt())
+                .rev()
+                .find(|d| n.is_multiple_of(*d))
+                .unwrap();
             Some(n / columns <= 1 << 24)
         }
         SamplerKind::Random

@@ -104,7 +104,7 @@ pub fn is_stratified(points: &[Vec2], columns: u32, rows: u32) -> Result<bool, E
     validate(points)?;
     let n = points.len();
     let cells = u64::from(columns) * u64::from(rows);
-    if n as u64 % cells != 0 {
+    if !(n as u64).is_multiple_of(cells) {
         return Err(Error::GridDoesNotDivide { columns, rows, n });
     }
     // cells divides n, so it fits in memory as counts.

@@ -26,6 +26,6 @@ pub(crate) use division::InvariantDivisor;
 pub(crate) use hash::salt;
 pub use hash::{hash_combine, hash_u32, pattern_seed, rand_u32};
 pub use owen::{owen_scramble, owen_scramble_reversed, radical_inverse_2};
-pub(crate) use permutation::Permutation;
-pub use permutation::permute;
+pub(crate) use permutation::{Permutation, derived_key};
+pub use permutation::{SHORT_LEN, permute};
 pub use unit::{MAX_STRATA, ONE_MINUS_EPSILON, UNIT_BITS, stratum_to_unit_f32, u32_to_unit_f32};

@@ -1,43 +1,62 @@
 //! Hashed permutations of `[0, len)`: element `index` of permutation
 //! `pattern` in O(1), with no table.
+//!
+//! Two constructions, chosen by length:
+//!
+//! - **Lengths 1 to 8** ([`SHORT_LEN`]): an exact Fisher-Yates shuffle
+//!   (Durstenfeld 1964) of `0..len` packed into the nibbles of a u32, with
+//!   its swap indices drawn from one 32-bit key by multiply-high (Lemire
+//!   2019). Each step `j = (u * (k + 1)) >> 32`, `u = (u * (k + 1)) mod 2^32`
+//!   peels one mixed-radix digit off the fraction `u / 2^32` exactly, so the
+//!   `len - 1` indices are the digits of `floor(u * len! / 2^32)`: as `u`
+//!   runs over all of u32, every one of the `len!` permutations is reached
+//!   `floor(2^32 / len!)` or `ceil(2^32 / len!)` times (at most 1 part in
+//!   106,000 apart at `len = 8`). Keys are bijective hashes of the pattern,
+//!   so this holds over patterns too.
+//! - **Longer lengths**: a keyed bijective hash of the smallest power-of-two
+//!   domain that holds `len` (add-multiply-xorshift rounds shaped like an
+//!   ARX cipher shrunk to the domain), walked back into `[0, len)` by
+//!   re-hashing ("cycle walking", Black & Rogaway 2002), then rotated.
+//!   Kensler 2013 (listing 3) has the same shape with fixed shifts, which at
+//!   short domains reach few permutations; here the shifts scale with the
+//!   domain. Each walk step lands inside with probability above 1/2; a
+//!   power-of-two length never walks. Lane-parallel callers re-hash only
+//!   the lanes still outside, so a batch stays branch-free per lane.
 
-use super::division::InvariantDivisor;
 use super::hash::hash_u32;
 
+/// The longest permutation built as an exact Fisher-Yates shuffle: eight
+/// nibbles fill a u32, and `8! = 40,320` leaves the key's 2^32 values
+/// spread over the permutations to within one part in 10^5.
+pub const SHORT_LEN: u32 = 8;
+
 /// A pseudo-random bijection of `[0, len)`: element `index` of permutation
-/// `pattern`, after Kensler 2013 ("Correlated Multi-Jittered Sampling",
-/// Pixar Technical Memo 13-01, listing 3), with a keyed hash whose rounds
-/// scale with the domain so that short lengths are shuffled well.
+/// `pattern`.
 ///
-/// A reversible hash scrambles `index` within the smallest power-of-two
-/// domain that holds `len`; results at or above `len` are hashed again
-/// ("cycle walking", Black & Rogaway 2002) until they fall inside, and the
-/// result is rotated by `pattern % len` (as in Kensler's listing). Each walk
-/// step lands inside with probability above 1/2. A step is 4 rounds of about
-/// ten integer operations for lengths above 32, 5 rounds from 9 to 32 and
-/// 13 from 2 to 8 (short domains draw fewer key bits per round).
+/// For `len <= 8` it is an exact uniform shuffle: over the 2^32 patterns
+/// every permutation appears `floor(2^32 / len!)` or `ceil(2^32 / len!)`
+/// times. Longer lengths use a keyed bijective hash of the next power of two
+/// with cycle walking, after Kensler 2013,
+/// whose uniformity `tests/permute.rs` measures (pair frequencies, distinct
+/// permutations).
 ///
-/// Patterns reach the permutations of short lengths evenly. Over
-/// `20,000 * len!` hashed patterns every permutation of lengths 2 to 6
-/// appears, and the counts are chi-square-uniform: 10, 103 and 654 on 23,
-/// 119 and 719 degrees of freedom at lengths 4, 5 and 6 (Kensler's hash,
-/// used before, reached 8 of the 24 permutations of length 4, chi-square
-/// 960,012). At lengths 8, 16, 64 and 1000 each index lands uniformly, and
-/// 10,000 patterns give 10,000 distinct permutations (at length 8, 8,896 of
-/// the 40,320; a uniform family gives 8,858 +- 29; Kensler's gave 1,023).
-/// `tests/permute.rs` checks all of this.
+/// Cost: one hash of `pattern`, then for `len <= 8` up to seven swap steps
+/// of about ten integer operations, and for longer lengths four rounds of
+/// about eight (five below 33 elements) times the expected walk length
+/// (under 2; exactly 1 for powers of two). Samplers hoist the per-pattern
+/// part, so a sample pays only the lookup or the rounds.
 ///
-/// `len` must be at least 1 and `index < len`; an `index` at or above `len`
-/// (checked in debug builds) is reduced modulo `len` first, so it still
-/// returns a value in `[0, len)`. (Walking from outside the range could
-/// loop forever: the hash's cycle through such an index may never enter it.)
+/// `index < len` is checked in debug builds; in release builds a larger
+/// `index` is reduced modulo `len` first, so it still returns a value in
+/// `[0, len)`. (Walking from outside the range could loop forever: the
+/// hash's cycle through such an index may never enter it.)
 ///
 /// # Panics
 ///
 /// If `len` is 0.
 ///
 /// ```
-/// use wellspread::hash::permute;
+/// use wellspread::primitives::permute;
 /// let mut seen = [false; 10];
 /// for i in 0..10 {
 ///     seen[permute(i, 10, 7) as usize] = true;
@@ -47,58 +66,68 @@ use super::hash::hash_u32;
 #[inline]
 #[must_use]
 pub fn permute(index: u32, len: u32, pattern: u32) -> u32 {
-    debug_assert!(len >= 1, "permute needs len >= 1");
+    assert!(len >= 1, "permute needs len >= 1");
     debug_assert!(index < len, "permute index {index} out of range 0..{len}");
     // Only reached with a bad index; panics (division by zero) for len = 0.
     let index = if index < len { index } else { index % len };
-    let i = permute_hash(index, len, permute_mask(len), permute_key(pattern));
-    // The final rotation by `p` makes permutations of the same `len` differ
-    // even where the hash above agrees (Kensler's listing does the same). The
-    // sum is taken in u64 so that `len` near 2^32 cannot wrap.
-    ((i as u64 + pattern as u64) % len as u64) as u32
+    Permutation::new(len, permute_key(pattern)).apply(index)
 }
 
-/// The smallest all-ones mask covering `[0, len)`: the power-of-two domain
-/// [`permute`] hashes in.
-#[inline]
-const fn permute_mask(len: u32) -> u32 {
-    let mut w = len.wrapping_sub(1);
-    w |= w >> 1;
-    w |= w >> 2;
-    w |= w >> 4;
-    w |= w >> 8;
-    w |= w >> 16;
-    w
-}
-
-/// The key of [`permute_hash`] for `pattern`: its hash, so that nearby
+/// The key of the permutation for a bare `pattern`: its hash, so that nearby
 /// patterns get unrelated keys. The xor moves the one pattern whose key is 0
-/// (every multiplier 1, every gate shut) away from pattern 0, the one callers
-/// use most; the constant is the golden ratio's fraction bits, as in
-/// [`hash_combine`].
+/// away from pattern 0, the one callers use most; the constant is the golden
+/// ratio's fraction bits, as in [`hash_combine`](super::hash_combine).
 #[inline(always)]
 const fn permute_key(pattern: u32) -> u32 {
     hash_u32(pattern ^ 0x9e37_79b9)
 }
 
-/// Rounds of [`permute_hash`] beyond the first four, for a `bits`-bit
-/// domain. Four rounds make every output bit depend on every input bit
-/// (each `>> half` moves the top half down, each multiply moves low bits
-/// up), and pass the pair-frequency measurements from 64 elements up
-/// (chi-square of `(p(0), p(1))` over 3 x 10^6 patterns). Short domains
-/// draw only a few key bits per round and need more: 13 in all for 2 to 8
-/// elements (with 11, the 720 permutations of length 6 were measurably
-/// uneven over 3.6 x 10^7 patterns, z = 3.5; 12 was the fewest that
-/// passed; one more for margin) and 5 for 9 to 32 elements (with 4, the
-/// pair frequencies at lengths 12 and 16 sat at z = 2.8). A 0-bit domain
-/// (length 1) has one permutation and needs no more.
+/// The key of one of several permutations drawn from one hashed pattern
+/// `seed`, told apart by `salt`: `seed` xored with `salt` and rotated by
+/// `salt`'s top five bits, then one multiply and a fold of the high half
+/// onto the low half (5 operations instead of a 7-operation hash per
+/// permutation).
+///
+/// The rotation is what keeps the keys of one pattern apart: the
+/// Fisher-Yates shuffles read a key from its top bits down, and the
+/// product's top bits come mostly from the top bits of what is multiplied,
+/// so each key's top bits come from a different part of `seed`. (Salting
+/// by xor alone kept the keys' top bits a near-fixed function of each
+/// other and measurably correlated the shuffles; multiplying `seed` by a
+/// different odd number per key gave every key 0 for `seed = 0` and equal
+/// keys for `seed = 2^31`.) The multiplier is [`hash_u32`]'s first. A
+/// bijection of `seed` for each salt, so each permutation alone keeps the
+/// exact uniformity of [`permute`]; `tests/permute.rs` measures the joint
+/// uniformity.
 #[inline(always)]
-const fn permute_extra_rounds(bits: u32) -> u32 {
-    match bits {
-        1..=3 => 9,
-        4..=5 => 1,
-        _ => 0,
+pub(crate) const fn derived_key(seed: u32, salt: u32) -> u32 {
+    let k = (seed ^ salt)
+        .rotate_left(salt >> 27)
+        .wrapping_mul(0x7feb_352d);
+    k ^ (k >> 15)
+}
+
+/// The smallest all-ones mask covering `[0, len)`: the power-of-two domain
+/// the long permutations hash in.
+#[inline(always)]
+const fn permute_mask(len: u32) -> u32 {
+    if len <= 1 {
+        0
+    } else {
+        u32::MAX >> (len - 1).leading_zeros()
     }
+}
+
+/// Rounds of [`permute_hash`] for a domain of `bits` bits (`bits >= 4`).
+/// Four rounds make every output bit depend on every input bit (each
+/// `>> half` moves the top half down, each multiply moves low bits up), and
+/// pass the pair-frequency measurements from 64 elements up (chi-square of
+/// `(p(0), p(1))` over 3 x 10^6 patterns); 9 to 32 elements draw fewer key
+/// bits per round and need a fifth (with four, the pair frequencies at
+/// lengths 12 and 16 sat at z = 2.8).
+#[inline(always)]
+const fn permute_rounds(bits: u32) -> u32 {
+    if bits <= 5 { 5 } else { 4 }
 }
 
 /// One round of [`permute_hash`] with round key `k` (see there).
@@ -110,18 +139,11 @@ const fn permute_round(i: u32, k: u32, w: u32, half: u32) -> u32 {
     i ^ ((i >> 1) & k.rotate_right(22))
 }
 
-/// [`permute`] before its final rotation: a keyed bijection of the `b`-bit
-/// domain under mask `w = 2^b - 1`, cycle-walked into `[0, len)`. `key` is
-/// the hashed pattern. Shared by [`permute`] and [`Permutation`] so that the
-/// two cannot drift apart.
+/// The keyed bijection of the `b`-bit domain under mask `w = 2^b - 1`
+/// that long permutations walk in; `key` is the permutation's key.
 ///
-/// Each round is an add-multiply-xorshift step keyed by 32 bits of `key`:
-/// the shape of Kensler's hash, but with every step reaching the whole
-/// domain whatever its size. Kensler's right shifts are fixed (4, 1, 11, 2,
-/// 2, 5 bits), so for a domain of a few bits most steps do nothing and the
-/// pattern enters through one multiplier and xors alone: a length of 4 met
-/// only 8 of its 24 permutations. Here the shift scales with `b` and the
-/// key enters every round in three ways:
+/// Each round is an add-multiply-xorshift step keyed by 32 bits of `key`,
+/// with every step reaching the whole domain:
 ///
 /// - `i + k`: an addition modulo `2^b` (low bits carry upwards only, so it
 ///   is a bijection of the low `b` bits); mixed with the xors below it makes
@@ -130,100 +152,162 @@ const fn permute_round(i: u32, k: u32, w: u32, half: u32) -> u32 {
 ///   `2^b` that moves low bits up.
 /// - `i ^= i >> half`, `half = ceil(b / 2)`, and `i ^= (i >> 1) & k''`: the
 ///   high half down onto the low half (the xorshift of murmur-style
-///   finalisers, scaled to `b`), then a key-gated neighbour step, so that
-///   even a 2-bit domain gets a key-chosen linear map each round (with
+///   finalisers, scaled to `b`), then a key-gated neighbour step (with
 ///   `i < 2^b` both are invertible: the top bits pass unchanged).
 ///
-/// `k`, `k'` and `k''` are `key` rotated by 0, 11 and 22 bits (disjoint
-/// windows for domains of up to 10 bits), and the key rotates by 7 bits
-/// after each round (coprime to 32, so successive rounds read different
-/// bits; beyond four rounds a short domain rereads bits in new roles).
-/// This is the round structure of an ARX block cipher shrunk to `b` bits,
-/// as in format-preserving encryption (Black & Rogaway 2002); the design
-/// was chosen by measuring how uniformly it reaches the permutations of
-/// short lengths (see [`permute`]).
+/// `k`, `k'` and `k''` are the round key rotated by 0, 11 and 22 bits, and
+/// round `r` uses `key` rotated by `7 r` bits (coprime to 32, so successive
+/// rounds read different bits).
 #[inline(always)]
-fn permute_hash(index: u32, len: u32, w: u32, key: u32) -> u32 {
-    let bits = u32::BITS - w.leading_zeros();
-    let half = bits.div_ceil(2);
-    let extra = permute_extra_rounds(bits);
-    let mut i = index;
-    loop {
-        // Round r uses the key rotated by 7 r bits; the first four are
-        // written out so that their rotations are constants.
-        i = permute_round(i, key, w, half);
-        i = permute_round(i, key.rotate_right(7), w, half);
-        i = permute_round(i, key.rotate_right(14), w, half);
-        i = permute_round(i, key.rotate_right(21), w, half);
-        let mut k = key.rotate_right(28);
-        for _ in 0..extra {
-            i = permute_round(i, k, w, half);
-            k = k.rotate_right(7);
-        }
-        if i < len {
-            return i;
-        }
+const fn permute_hash(i: u32, key: u32, w: u32, half: u32, rounds: u32) -> u32 {
+    let mut i = permute_round(i, key, w, half);
+    i = permute_round(i, key.rotate_right(7), w, half);
+    i = permute_round(i, key.rotate_right(14), w, half);
+    i = permute_round(i, key.rotate_right(21), w, half);
+    if rounds > 4 {
+        i = permute_round(i, key.rotate_right(28), w, half);
     }
+    i
 }
 
-/// One permutation of `[0, len)`, ready to apply: [`permute`] with its
-/// per-pattern work hoisted, for `fill` loops and random access alike.
-#[derive(Clone, Copy, Debug)]
+/// The identity permutation of `0..8`, one element per nibble.
+const IDENTITY_NIBBLES: u32 = 0x7654_3210;
+
+/// The Fisher-Yates shuffle of `0..len` (`len <= 8`) drawn from `key`, one
+/// element per nibble (element `i` in bits `4 i .. 4 i + 4`). Swap `k`
+/// (from `len - 1` down to 1) exchanges nibbles `k` and `j`, with `j` the
+/// next mixed-radix digit of `key / 2^32` in base `k + 1` (see the module
+/// docs for why this is exactly uniform).
+#[inline(always)]
+const fn shuffled_nibbles(len: u32, key: u32) -> u32 {
+    let mut packed = IDENTITY_NIBBLES;
+    let mut u = key;
+    let mut k = len;
+    while k > 1 {
+        k -= 1;
+        let product = u as u64 * (k as u64 + 1);
+        let j = (product >> 32) as u32;
+        u = product as u32;
+        // Swap nibbles k and j (j <= k) with one xor of their difference.
+        let diff = ((packed >> (4 * k)) ^ (packed >> (4 * j))) & 0xf;
+        packed ^= (diff << (4 * k)) | (diff << (4 * j));
+    }
+    packed
+}
+
+/// One permutation of `[0, len)`, ready to apply: the per-pattern work
+/// (the shuffle of a short length; the rotation of a long one) done once,
+/// for `fill` loops and random access alike.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub(crate) struct Permutation {
-    len: InvariantDivisor,
-    /// The hashing domain's mask, `permute_mask(len)`.
+    len: u32,
+    /// `permute_mask(len)`, the long hash's domain; 0 for short lengths.
     mask: u32,
-    /// `permute_key(pattern)`, the key of [`permute_hash`].
+    /// The key: the long hash's round keys.
     key: u32,
-    /// `pattern % len`: `(i + pattern) % len == (i + rotation) % len`, and
-    /// with `i, rotation < len` that is one conditional subtraction.
-    rotation: u32,
-}
-
-impl InvariantDivisor {
-    /// Permutation `pattern` of `[0, len)` for `len = self`:
-    /// [`permute`]`(_, len, pattern)` with the per-pattern work (the key and
-    /// the rotation `pattern % len`) done here, once.
-    #[inline(always)]
-    pub(crate) const fn permutation(self, pattern: u32) -> Permutation {
-        self.permutation_in::<false>(pattern)
-    }
-
-    /// [`permutation`](Self::permutation), specialised at compile time like
-    /// [`div_rem_in`](Self::div_rem_in).
-    #[inline(always)]
-    pub(crate) const fn permutation_in<const POW2: bool>(self, pattern: u32) -> Permutation {
-        Permutation {
-            len: self,
-            mask: permute_mask(self.get()),
-            key: permute_key(pattern),
-            rotation: self.div_rem_in::<POW2>(pattern).1,
-        }
-    }
+    /// Short lengths: the shuffled nibbles. Long lengths: the final
+    /// rotation, in `[0, len)`.
+    packed_or_rotation: u32,
 }
 
 impl Permutation {
-    /// Element `index` (`< len`) of the permutation.
+    /// The permutation of `[0, len)` (`len >= 1`) with key `key`.
     #[inline(always)]
-    pub(crate) fn apply(&self, index: u32) -> u32 {
-        let len = self.len.get();
-        debug_assert!(index < len, "permute index {index} out of range 0..{len}");
-        // As in `permute`: a bad index is reduced first, or the walk could
-        // loop forever.
-        let index = if index < len {
-            index
+    pub(crate) const fn new(len: u32, key: u32) -> Self {
+        debug_assert!(len >= 1);
+        if len <= SHORT_LEN {
+            Self {
+                len,
+                mask: 0,
+                key,
+                packed_or_rotation: shuffled_nibbles(len, key),
+            }
         } else {
-            self.len.div_rem(index).1
-        };
-        let i = permute_hash(index, len, self.mask, self.key);
-        // i + rotation < 2 len <= 2^33: summed in u64 so that it cannot wrap.
-        let sum = i as u64 + self.rotation as u64;
-        if sum >= len as u64 {
-            (sum - len as u64) as u32
-        } else {
-            sum as u32
+            // The rotation reads the key's bits afresh (rotated by 16) and
+            // maps them onto [0, len) by multiply-high: no division.
+            let rotation = ((key.rotate_right(16) as u64 * len as u64) >> 32) as u32;
+            Self {
+                len,
+                mask: permute_mask(len),
+                key,
+                packed_or_rotation: rotation,
+            }
         }
     }
+
+    /// Element `index` (`< len`, checked in debug builds) of the
+    /// permutation.
+    #[inline(always)]
+    pub(crate) fn apply(&self, index: u32) -> u32 {
+        self.apply_lanes([index])[0]
+    }
+
+    /// Elements `index[lane]` (each `< len`) of the permutation, one lane
+    /// each: branch-free per lane, so a batch of lanes runs in SIMD
+    /// registers. The walk re-hashes only the lanes still outside `[0,
+    /// len)`, so every lane gets exactly what [`apply`](Self::apply) gives.
+    #[inline(always)]
+    pub(crate) fn apply_lanes<const N: usize>(&self, index: [u32; N]) -> [u32; N] {
+        apply_with(self.len, self.mask, |_| *self, index)
+    }
+
+    /// Element `index[lane]` of permutation `permutations[lane]`, all of one
+    /// length, one lane each: [`apply`](Self::apply) lane by lane, for
+    /// samplers whose every column has its own permutation.
+    #[inline(always)]
+    pub(crate) fn apply_each<const N: usize>(
+        permutations: &[Permutation; N],
+        index: [u32; N],
+    ) -> [u32; N] {
+        let Some(first) = permutations.first() else {
+            return index;
+        };
+        debug_assert!(permutations.iter().all(|p| p.len == first.len));
+        apply_with(first.len, first.mask, |lane| permutations[lane], index)
+    }
+}
+
+/// [`Permutation::apply_lanes`] with lane `l` under permutation
+/// `permutation(l)`, all of length `len` and mask `mask`.
+#[inline(always)]
+fn apply_with<const N: usize>(
+    len: u32,
+    mask: u32,
+    permutation: impl Fn(usize) -> Permutation,
+    index: [u32; N],
+) -> [u32; N] {
+    debug_assert!(
+        index.iter().all(|&i| i < len),
+        "permute index out of range 0..{len}"
+    );
+    if len <= SHORT_LEN {
+        // (`& 7` keeps the shift in range for a bad index in release builds.)
+        return core::array::from_fn(|l| {
+            (permutation(l).packed_or_rotation >> ((index[l] & 7) * 4)) & 0xf
+        });
+    }
+    let bits = u32::BITS - mask.leading_zeros();
+    let (half, rounds) = (bits.div_ceil(2), permute_rounds(bits));
+    let hash = |i: u32, l: usize| permute_hash(i, permutation(l).key, mask, half, rounds);
+    let mut i: [u32; N] = core::array::from_fn(|l| hash(index[l], l));
+    if mask != len - 1 {
+        while i.iter().any(|&i| i >= len) {
+            for (l, i) in i.iter_mut().enumerate() {
+                let next = hash(*i, l);
+                *i = if *i >= len { next } else { *i };
+            }
+        }
+    }
+    // Rotate by `rotation < len` without overflowing u32.
+    core::array::from_fn(|l| {
+        let rotation = permutation(l).packed_or_rotation;
+        let wrap = len - rotation;
+        if i[l] >= wrap {
+            i[l] - wrap
+        } else {
+            i[l] + rotation
+        }
+    })
 }
 
 #[cfg(test)]
@@ -246,6 +330,60 @@ mod tests {
     }
 
     #[test]
+    fn short_shuffles_reach_every_permutation_exactly_evenly() {
+        // Key `u` gives the permutation whose Fisher-Yates digits are those
+        // of `r = floor(u * len! / 2^32)`: each `r` owns the block of keys
+        // `ceil(r 2^32 / len!) ..= ceil((r + 1) 2^32 / len!) - 1`. Both ends
+        // of every block give the same permutation, distinct blocks give
+        // distinct permutations, and blocks hold floor or ceil of
+        // `2^32 / len!` keys: so every permutation has that many keys.
+        for len in 1..=SHORT_LEN {
+            let total: u64 = (1..=len as u64).product();
+            let first_key = |r: u64| (r << 32).div_ceil(total);
+            let mut seen = std::collections::BTreeSet::new();
+            for r in 0..total {
+                let (first, last) = (first_key(r), first_key(r + 1) - 1);
+                let packed = shuffled_nibbles(len, first as u32);
+                assert_eq!(
+                    shuffled_nibbles(len, last as u32),
+                    packed,
+                    "len {len} r {r}"
+                );
+                assert!(
+                    seen.insert(packed),
+                    "len {len}: rank {r} repeats {packed:#x}"
+                );
+                let keys = last - first + 1;
+                assert!(keys == (1 << 32) / total || keys == (1 << 32) / total + 1);
+                // And it is a permutation of 0..len.
+                let mut elements: std::vec::Vec<u32> =
+                    (0..len).map(|i| (packed >> (4 * i)) & 0xf).collect();
+                elements.sort_unstable();
+                assert!(
+                    elements.iter().copied().eq(0..len),
+                    "len {len}: {packed:#x}"
+                );
+            }
+            assert_eq!(seen.len() as u64, total);
+        }
+    }
+
+    #[test]
+    fn lanes_walk_exactly_like_single_lanes() {
+        // Lengths just above a power of two make most lanes walk.
+        for len in [9, 17, 33, 100, 257, 4097, 65_537] {
+            for key in [0, 1, 0x1234_5678, u32::MAX] {
+                let p = Permutation::new(len, key);
+                let index: [u32; 16] = core::array::from_fn(|l| (l as u32 * 7919) % len);
+                let lanes = p.apply_lanes(index);
+                for (l, &i) in index.iter().enumerate() {
+                    assert_eq!(lanes[l], p.apply(i), "len {len} key {key:#x} index {i}");
+                }
+            }
+        }
+    }
+
+    #[test]
     fn permute_differs_between_patterns() {
         let a: std::vec::Vec<u32> = (0..64).map(|i| permute(i, 64, 1)).collect();
         let b: std::vec::Vec<u32> = (0..64).map(|i| permute(i, 64, 2)).collect();
@@ -260,7 +398,7 @@ mod tests {
     }
 
     #[test]
-    #[should_panic]
+    #[should_panic(expected = "permute needs len >= 1")]
     fn permute_of_an_empty_range_panics() {
         let _ = permute(0, 0, 1);
     }

@@ -107,10 +107,10 @@ impl InvariantDivisor {
     #[inline(always)]
     pub(crate) const fn stratum_to_unit_f32(self, stratum: u32, bits: u32) -> f32 {
         debug_assert!(self.get() <= MAX_STRATA && stratum < self.get());
-        if let Some(k) = self.log2() {
-            if k <= UNIT_BITS {
-                return power_of_two_stratum_to_unit_f32(stratum, k, bits);
-            }
+        if let Some(k) = self.log2()
+            && k <= UNIT_BITS
+        {
+            return power_of_two_stratum_to_unit_f32(stratum, k, bits);
         }
         let start = self.div_ceil((stratum as u64) << UNIT_BITS);
         let end = self.div_ceil((stratum as u64 + 1) << UNIT_BITS);

@@ -1,8 +1,9 @@
 use glam::Vec2;
 
-use crate::primitives::{Permutation, hash_u32, salt};
-use crate::sampler::{SMALL_TABLE, Sampler2D, debug_check_index, small_table};
-use crate::samplers::grid::{Grid, GridPattern, fill_grid};
+use crate::primitives::{Permutation, derived_key, hash_u32, salt};
+use crate::sampler::{FillOn, SMALL_TABLE, Sampler2D, small_table};
+use crate::samplers::grid::{Grid, GridPattern, Jitter, fill_grid};
+use crate::simd::Isa;
 use crate::{Error, SamplerKind};
 
 /// Correlated multi-jittered sampling (Kensler 2013): multi-jitter in which
@@ -25,12 +26,17 @@ use crate::{Error, SamplerKind};
 ///
 /// # Cost
 ///
-/// One hash of the pattern, three [`permute`](crate::primitives::permute)
-/// (expected under two rounds each) and two [`rand_u32`](crate::primitives::rand_u32) per sample, plus two
-/// fixed-point stratum conversions; no division (the sampler stores
-/// reciprocals of its lengths). `fill` hashes the pattern once and tabulates
-/// the two shared shuffles (for grids up to 256 x 256), leaving one permute
-/// per sample.
+/// `sample`: one hash of the pattern and three 5-operation key derivations,
+/// then three permutations (the cells, and the two shared shuffles: a
+/// Fisher-Yates shuffle for sides up to 8), two
+/// [`rand_u32`](crate::primitives::rand_u32) and two fixed-point stratum
+/// conversions; no division, no table. Kensler's listing pays a hardware
+/// division in each of its three permutations and two more for the cell;
+/// `cargo bench --bench speed` measures the two side by side. `fill` builds the
+/// two shared shuffles once per pattern (as tables for sides 9 to 256), so a
+/// sample pays one permutation and two lookups. `fill` runs the same formula on 8 or 16 lanes at once (AVX2 or AVX-512,
+/// detected at run time), bit for bit equal to `sample`; measured ratios to a
+/// `rand_pcg::Pcg32` fill are in `docs/performance.md`.
 ///
 /// # Limits
 ///
@@ -89,50 +95,80 @@ impl CorrelatedMultiJittered {
     }
 }
 
-/// One pattern of [`CorrelatedMultiJittered`]: its hash, the order of the
-/// cells, and the two shared shuffles (`sub_column(row)`,
-/// `sub_row(column)`), computed or looked up.
-struct CorrelatedMultiJitteredPattern<'a, C, R> {
+/// One pattern of [`CorrelatedMultiJittered`]: the order of the cells, the
+/// two shared shuffles (`sub_columns`: of the rows, shared by every column;
+/// `sub_rows`: of the columns, shared by every row), permutations or
+/// tables of them, and the jitter.
+struct CorrelatedMultiJitteredPattern<'a, S> {
     grid: &'a Grid,
-    seed: u32,
     order: Permutation,
-    sub_column: C,
-    sub_row: R,
+    sub_columns: S,
+    sub_rows: S,
+    jitter: Jitter,
 }
 
-impl<C: Fn(u32) -> u32, R: Fn(u32) -> u32> GridPattern
-    for CorrelatedMultiJitteredPattern<'_, C, R>
-{
+/// A shared shuffle, applied lane by lane.
+trait Shuffle {
+    fn shuffle<const N: usize>(&self, index: [u32; N]) -> [u32; N];
+}
+
+impl Shuffle for Permutation {
+    #[inline(always)]
+    fn shuffle<const N: usize>(&self, index: [u32; N]) -> [u32; N] {
+        self.apply_lanes(index)
+    }
+}
+
+/// A shuffle of at most [`SMALL_TABLE`] elements, written out.
+struct ShuffleTable([u32; SMALL_TABLE]);
+
+impl Shuffle for ShuffleTable {
+    #[inline(always)]
+    fn shuffle<const N: usize>(&self, index: [u32; N]) -> [u32; N] {
+        index.map(|i| self.0[i as usize % SMALL_TABLE])
+    }
+}
+
+impl<S: Shuffle> GridPattern for CorrelatedMultiJitteredPattern<'_, S> {
     fn grid(&self) -> &Grid {
         self.grid
     }
 
     #[inline(always)]
-    fn point<const POW2: bool>(&self, index: u32) -> Vec2 {
-        let cell = self.order.apply(index);
-        let (row, column) = self.grid.cell::<POW2>(cell);
+    fn points<const POW2: bool, const N: usize>(&self, index: [u32; N]) -> [Vec2; N] {
+        let grid = self.grid;
+        let cell = self.order.apply_lanes(index);
+        let (row, column): ([u32; N], [u32; N]) = (
+            cell.map(|cell| grid.cell::<POW2>(cell).0),
+            cell.map(|cell| grid.cell::<POW2>(cell).1),
+        );
         // One shuffle for all columns, one for all rows: Kensler's
         // correlation.
-        let sub = ((self.sub_column)(row), (self.sub_row)(column));
-        self.grid
-            .latin_point::<POW2>(cell, (row, column), sub, self.seed)
+        let sub_column = self.sub_columns.shuffle(row);
+        let sub_row = self.sub_rows.shuffle(column);
+        core::array::from_fn(|l| {
+            grid.latin_point::<POW2>(
+                cell[l],
+                (row[l], column[l]),
+                (sub_column[l], sub_row[l]),
+                &self.jitter,
+            )
+        })
     }
 }
 
 impl CorrelatedMultiJittered {
-    fn pattern(
-        &self,
-        pattern: u32,
-    ) -> CorrelatedMultiJitteredPattern<'_, impl Fn(u32) -> u32, impl Fn(u32) -> u32> {
+    /// The pattern with its three permutations; keys from one hash of the
+    /// pattern by three cheap derivations.
+    fn pattern(&self, pattern: u32) -> CorrelatedMultiJitteredPattern<'_, Permutation> {
         let seed = hash_u32(pattern);
-        let shuffle_x = self.grid.rows.permutation(seed ^ salt::SHUFFLE_X);
-        let shuffle_y = self.grid.columns.permutation(seed ^ salt::SHUFFLE_Y);
+        let grid = &self.grid;
         CorrelatedMultiJitteredPattern {
-            grid: &self.grid,
-            seed,
-            order: self.grid.n.permutation(seed ^ salt::ORDER),
-            sub_column: move |row| shuffle_x.apply(row),
-            sub_row: move |column| shuffle_y.apply(column),
+            grid,
+            order: Permutation::new(grid.len(), derived_key(seed, salt::ORDER)),
+            sub_columns: Permutation::new(grid.rows(), derived_key(seed, salt::SHUFFLE_X)),
+            sub_rows: Permutation::new(grid.columns(), derived_key(seed, salt::SHUFFLE_Y)),
+            jitter: Jitter::new(seed),
         }
     }
 }
@@ -145,29 +181,35 @@ impl Sampler2D for CorrelatedMultiJittered {
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        debug_check_index(index, self.len());
-        self.pattern(pattern).point::<false>(index)
+        self.pattern(pattern).point(index)
     }
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
+        self.fill_on(Isa::best(), pattern, out);
+    }
+}
+
+impl FillOn for CorrelatedMultiJittered {
+    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
         let computed = self.pattern(pattern);
         let (columns, rows) = (self.grid.columns(), self.grid.rows());
-        if columns as usize <= SMALL_TABLE && rows as usize <= SMALL_TABLE {
-            // The two shared shuffles have only `rows` and `columns` entries
-            // (16 each at n = 256): tabulated once, they replace two of the
-            // three permutes per sample with loads.
-            let sub_columns = small_table(rows, &computed.sub_column);
-            let sub_rows = small_table(columns, &computed.sub_row);
+        // Short shuffles are already one nibble lookup; longer ones up to
+        // SMALL_TABLE elements are hashed once per element here instead of
+        // once per sample.
+        let short = rows <= crate::primitives::SHORT_LEN;
+        if !short && columns as usize <= SMALL_TABLE && rows as usize <= SMALL_TABLE {
             let tabled = CorrelatedMultiJitteredPattern {
-                sub_column: |row: u32| sub_columns[row as usize],
-                sub_row: |column: u32| sub_rows[column as usize],
                 grid: computed.grid,
-                seed: computed.seed,
                 order: computed.order,
+                sub_columns: ShuffleTable(small_table(rows, |row| computed.sub_columns.apply(row))),
+                sub_rows: ShuffleTable(small_table(columns, |column| {
+                    computed.sub_rows.apply(column)
+                })),
+                jitter: computed.jitter,
             };
-            fill_grid(&tabled, out);
+            fill_grid(&tabled, isa, out);
         } else {
-            fill_grid(&computed, out);
+            fill_grid(&computed, isa, out);
         }
     }
 }

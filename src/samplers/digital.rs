@@ -8,6 +8,7 @@
 use glam::Vec2;
 
 use crate::primitives::{hash_u32, owen_scramble_reversed, salt, u32_to_unit_f32};
+use crate::simd::{self, FnKernel, Isa};
 
 /// Three independent seeds for a shuffled, Owen-scrambled 2D sequence: one
 /// for the index shuffle and one per coordinate.
@@ -54,39 +55,26 @@ pub(crate) const fn bits_to_point((x, y): (u32, u32)) -> Vec2 {
     Vec2::new(u32_to_unit_f32(x), u32_to_unit_f32(y))
 }
 
-/// Points per batch in [`fill_in_lanes`].
-const LANES: usize = 8;
-
 /// `fill` for sequences whose point is `bits_to_point(point_bits(index,
-/// seeds))`, in batches of [`LANES`] independent indices. Every step of a
-/// point is a 32-bit integer operation on its own lane (multiplies, shifts,
-/// masks, bit reversals), so the compiler can run a batch in SIMD
-/// registers; on x86-64 with only SSE2 this is about a third faster than
-/// one point at a time. The values are exactly those of `sample`, which
-/// calls the same `point_bits`.
+/// seeds))`: points `start, start + 1, ...` on instruction set `isa`. Every
+/// step of a point is a 32-bit integer operation on its own lane
+/// (multiplies, shifts, masks, bit reversals), so batches run in SIMD
+/// registers; the values are exactly those of `sample`, which calls the
+/// same `point_bits`.
 #[inline(always)]
-pub(crate) fn fill_in_lanes(
+pub(crate) fn fill_sequence(
+    isa: Isa,
+    start: u32,
     out: &mut [Vec2],
     seeds: OwenSeeds,
     point_bits: impl Fn(u32, OwenSeeds) -> (u32, u32),
 ) {
-    // Callers check `out.len() <= n <= u32::MAX`, so indices fit in u32.
-    let mut chunks = out.chunks_exact_mut(LANES);
-    let mut base = 0u32;
-    for chunk in &mut chunks {
-        let mut x = [0u32; LANES];
-        let mut y = [0u32; LANES];
-        for (lane, (x, y)) in (0..).zip(x.iter_mut().zip(y.iter_mut())) {
-            (*x, *y) = point_bits(base + lane, seeds);
-        }
-        for ((point, &x), &y) in chunk.iter_mut().zip(&x).zip(&y) {
-            *point = bits_to_point((x, y));
-        }
-        base += LANES as u32;
-    }
-    for (index, point) in (base..).zip(chunks.into_remainder()) {
-        *point = bits_to_point(point_bits(index, seeds));
-    }
+    simd::fill_on(
+        isa,
+        &FnKernel(|index| bits_to_point(point_bits(index, seeds))),
+        start,
+        out,
+    );
 }
 
 #[cfg(test)]

@@ -13,7 +13,8 @@
 use glam::Vec2;
 
 use crate::primitives::{InvariantDivisor, MAX_STRATA, rand_u32, salt};
-use crate::sampler::check_fill_len;
+use crate::sampler::{check_fill_len, debug_check_index};
+use crate::simd::{self, Isa, Kernel};
 use crate::{Error, SamplerKind};
 
 /// A `columns x rows` grid of `n = columns * rows` cells, each length
@@ -128,25 +129,48 @@ impl Grid {
     /// multi-jittered) in cell `cell` at `(row, column)`, in the fine column
     /// `column * rows + sub_column` and fine row `row * columns + sub_row`
     /// that the sampler's shuffles picked, jittered uniformly inside that
-    /// fine cell by `seed`.
+    /// fine cell.
     #[inline(always)]
     pub(crate) fn latin_point<const POW2: bool>(
         &self,
         cell: u32,
         (row, column): (u32, u32),
         (sub_column, sub_row): (u32, u32),
-        seed: u32,
+        jitter: &Jitter,
     ) -> Vec2 {
+        let (x_bits, y_bits) = jitter.bits(cell);
         Vec2::new(
-            self.n.stratum_to_unit_f32_in::<POW2>(
-                column * self.rows() + sub_column,
-                rand_u32(cell, seed ^ salt::JITTER_X),
-            ),
-            self.n.stratum_to_unit_f32_in::<POW2>(
-                row * self.columns() + sub_row,
-                rand_u32(cell, seed ^ salt::JITTER_Y),
-            ),
+            self.n
+                .stratum_to_unit_f32_in::<POW2>(column * self.rows() + sub_column, x_bits),
+            self.n
+                .stratum_to_unit_f32_in::<POW2>(row * self.columns() + sub_row, y_bits),
         )
+    }
+}
+
+/// The two jitter seeds of one pattern: where inside its stratum each
+/// coordinate of a point lands, as 32 random bits per coordinate from
+/// [`rand_u32`] (Kensler 2013's `randfloat` hash).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Jitter {
+    x: u32,
+    y: u32,
+}
+
+impl Jitter {
+    /// The jitter seeds of the pattern whose hash is `seed`.
+    #[inline(always)]
+    pub(crate) const fn new(seed: u32) -> Self {
+        Self {
+            x: seed ^ salt::JITTER_X,
+            y: seed ^ salt::JITTER_Y,
+        }
+    }
+
+    /// Random bits for the x and y offsets of the point keyed `key`.
+    #[inline(always)]
+    pub(crate) const fn bits(&self, key: u32) -> (u32, u32) {
+        (rand_u32(key, self.x), rand_u32(key, self.y))
     }
 }
 
@@ -155,7 +179,7 @@ impl Grid {
 pub(crate) fn most_square_sides(n: u32) -> (u32, u32) {
     debug_assert!(n >= 1);
     let mut columns = n.isqrt();
-    while n % columns != 0 {
+    while !n.is_multiple_of(columns) {
         columns -= 1;
     }
     (columns, n / columns)
@@ -168,24 +192,46 @@ pub(crate) trait GridPattern {
     /// The sampler's grid.
     fn grid(&self) -> &Grid;
 
-    /// Sample `index`. `POW2` promises a power-of-two `n`, for a
-    /// branch-free `fill` loop.
-    fn point<const POW2: bool>(&self, index: u32) -> Vec2;
+    /// Points `index[0..N]`, one lane each (see [`Kernel`]). `POW2`
+    /// promises a power-of-two `n` (so both sides too), for shifts in place
+    /// of the multiply-high divisions.
+    fn points<const POW2: bool, const N: usize>(&self, index: [u32; N]) -> [Vec2; N];
+
+    /// Sample `index` alone, reduced modulo `n` first (release builds only
+    /// see a bad index; debug builds reject it).
+    #[inline(always)]
+    fn point(&self, index: u32) -> Vec2 {
+        let n = self.grid().len();
+        debug_check_index(index, n);
+        let index = if index < n {
+            index
+        } else {
+            self.grid().n.div_rem(index).1
+        };
+        self.points::<false, 1>([index])[0]
+    }
 }
 
-/// `fill` for every grid sampler: the prepared pattern's points `0..out.len()`,
-/// with the power-of-two case chosen once per call.
-#[inline(always)]
-pub(crate) fn fill_grid<P: GridPattern>(pattern: &P, out: &mut [Vec2]) {
+/// A [`GridPattern`] as a [`Kernel`], with `POW2` fixed.
+struct GridKernel<'a, P, const POW2: bool>(&'a P);
+
+impl<P: GridPattern, const POW2: bool> Kernel for GridKernel<'_, P, POW2> {
+    #[inline(always)]
+    fn points<const N: usize>(&self, index: [u32; N]) -> [Vec2; N] {
+        self.0.points::<POW2, N>(index)
+    }
+}
+
+/// `fill` for every grid sampler on instruction set `isa`: the prepared
+/// pattern's points `0..out.len()`, with the power-of-two case chosen once
+/// per call.
+#[inline]
+pub(crate) fn fill_grid<P: GridPattern>(pattern: &P, isa: Isa, out: &mut [Vec2]) {
     check_fill_len(out.len(), pattern.grid().len());
     if pattern.grid().n.is_power_of_two() {
-        for (index, point) in (0..).zip(out.iter_mut()) {
-            *point = pattern.point::<true>(index);
-        }
+        simd::fill_on(isa, &GridKernel::<P, true>(pattern), 0, out);
     } else {
-        for (index, point) in (0..).zip(out.iter_mut()) {
-            *point = pattern.point::<false>(index);
-        }
+        simd::fill_on(isa, &GridKernel::<P, false>(pattern), 0, out);
     }
 }
 

@@ -4,7 +4,8 @@ use crate::Error;
 use crate::primitives::{
     hash_combine, hash_u32, owen_scramble_reversed, salt, stratum_to_unit_f32, u32_to_unit_f32,
 };
-use crate::sampler::{Sampler2D, check_fill_len};
+use crate::sampler::{FillOn, Sampler2D, check_fill_len};
+use crate::simd::{self, FnKernel, Isa};
 
 /// Base-3 digits scrambled per sample: `3^15 = 14_348_907` strata, the most
 /// that fit in the `2^24` f32 strata of `[0, 1)`.
@@ -42,10 +43,12 @@ const BASE3_STRATA: u32 = 14_348_907;
 ///
 /// # Cost
 ///
-/// One Owen-scramble hash for x; for y, fifteen rounds of a divide by 3
-/// (a multiply) and one independent [`hash_u32`], then two more hashes for
-/// the low digits and a fixed-point stratum conversion: about three times
-/// [`Sobol`](crate::Sobol)'s cost.
+/// One Owen-scramble hash for x; for y, fifteen rounds of a divide by 3 (a
+/// multiply) and one independent [`hash_u32`], then two more hashes for the
+/// low digits and a fixed-point stratum conversion: about three times
+/// [`Sobol`](crate::Sobol)'s operations. `fill` runs the same formula on 8 or 16 lanes at once (AVX2 or AVX-512,
+/// detected at run time), bit for bit equal to `sample`; measured ratios to a
+/// `rand_pcg::Pcg32` fill are in `docs/performance.md`.
 ///
 /// # Limits
 ///
@@ -186,11 +189,15 @@ impl Sampler2D for Halton {
 
     #[inline]
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
+        self.fill_on(Isa::best(), pattern, out);
+    }
+}
+
+impl FillOn for Halton {
+    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
         check_fill_len(out.len(), self.n);
         let seeds = HaltonSeeds::new(pattern);
-        for (index, point) in (0..).zip(out.iter_mut()) {
-            *point = halton_point(index, seeds);
-        }
+        simd::fill_on(isa, &FnKernel(|index| halton_point(index, seeds)), 0, out);
     }
 }
 

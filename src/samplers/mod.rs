@@ -30,6 +30,8 @@ pub use random::Random;
 pub use regular::Regular;
 pub use sobol::Sobol;
 
+use crate::sampler::FillOn;
+use crate::simd::Isa;
 use crate::{Error, Sampler2D};
 
 /// Declares the sampler list once: the kind enum, its names, the dispatching
@@ -121,6 +123,14 @@ macro_rules! sampler_kinds {
             fn fill(&self, pattern: u32, out: &mut [Vec2]) {
                 match self {
                     $(AnySampler::$variant(s) => s.fill(pattern, out),)*
+                }
+            }
+        }
+
+        impl FillOn for AnySampler {
+            fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
+                match self {
+                    $(AnySampler::$variant(s) => s.fill_on(isa, pattern, out),)*
                 }
             }
         }

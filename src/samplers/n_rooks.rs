@@ -1,8 +1,9 @@
 use glam::Vec2;
 
-use crate::primitives::{MAX_STRATA, Permutation, hash_u32, rand_u32, salt};
-use crate::sampler::{Sampler2D, debug_check_index};
-use crate::samplers::grid::{Grid, GridPattern, fill_grid};
+use crate::primitives::{MAX_STRATA, Permutation, derived_key, hash_u32, salt};
+use crate::sampler::{FillOn, Sampler2D};
+use crate::samplers::grid::{Grid, GridPattern, Jitter, fill_grid};
+use crate::simd::Isa;
 use crate::{Error, SamplerKind};
 
 /// N-rooks (Latin hypercube) sampling: one point in every row and every
@@ -20,10 +21,12 @@ use crate::{Error, SamplerKind};
 ///
 /// # Cost
 ///
-/// One hash, two [`permute`](crate::primitives::permute) (expected under two
-/// rounds each) and two [`rand_u32`] per sample, plus two fixed-point stratum
-/// conversions; no division (the sampler stores the reciprocal of `n`).
-/// `fill` hashes the pattern once.
+/// Per sample: two permutations of `n` (one for columns, one for rows), two
+/// [`rand_u32`](crate::primitives::rand_u32), two fixed-point stratum
+/// conversions; no division. `sample` adds one hash of the pattern and two
+/// 5-operation key derivations. `fill` runs the same formula on 8 or 16 lanes at once (AVX2 or AVX-512,
+/// detected at run time), bit for bit equal to `sample`; measured ratios to a
+/// `rand_pcg::Pcg32` fill are in `docs/performance.md`.
 ///
 /// # Limits
 ///
@@ -77,19 +80,19 @@ impl NRooks {
         let seed = hash_u32(pattern);
         NRooksPattern {
             grid: &self.grid,
-            seed,
-            columns: self.grid.n.permutation(seed ^ salt::SHUFFLE_X),
-            rows: self.grid.n.permutation(seed ^ salt::SHUFFLE_Y),
+            columns: Permutation::new(self.len(), derived_key(seed, salt::SHUFFLE_X)),
+            rows: Permutation::new(self.len(), derived_key(seed, salt::SHUFFLE_Y)),
+            jitter: Jitter::new(seed),
         }
     }
 }
 
-/// One pattern of [`NRooks`]: its hash and its column and row permutations.
+/// One pattern of [`NRooks`]: its column and row permutations and jitter.
 struct NRooksPattern<'a> {
     grid: &'a Grid,
-    seed: u32,
     columns: Permutation,
     rows: Permutation,
+    jitter: Jitter,
 }
 
 impl GridPattern for NRooksPattern<'_> {
@@ -98,17 +101,20 @@ impl GridPattern for NRooksPattern<'_> {
     }
 
     #[inline(always)]
-    fn point<const POW2: bool>(&self, index: u32) -> Vec2 {
+    fn points<const POW2: bool, const N: usize>(&self, index: [u32; N]) -> [Vec2; N] {
         // Column and row are two independent permutations of the index, so
         // index order says nothing about position and padded dimension pairs
         // that share an index stay decorrelated.
-        let column = self.columns.apply(index);
-        let row = self.rows.apply(index);
+        let columns = self.columns.apply_lanes(index);
+        let rows = self.rows.apply_lanes(index);
         let n = self.grid.n;
-        Vec2::new(
-            n.stratum_to_unit_f32_in::<POW2>(column, rand_u32(index, self.seed ^ salt::JITTER_X)),
-            n.stratum_to_unit_f32_in::<POW2>(row, rand_u32(index, self.seed ^ salt::JITTER_Y)),
-        )
+        core::array::from_fn(|lane| {
+            let (x_bits, y_bits) = self.jitter.bits(index[lane]);
+            Vec2::new(
+                n.stratum_to_unit_f32_in::<POW2>(columns[lane], x_bits),
+                n.stratum_to_unit_f32_in::<POW2>(rows[lane], y_bits),
+            )
+        })
     }
 }
 
@@ -120,11 +126,16 @@ impl Sampler2D for NRooks {
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        debug_check_index(index, self.len());
-        self.pattern(pattern).point::<false>(index)
+        self.pattern(pattern).point(index)
     }
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        fill_grid(&self.pattern(pattern), out);
+        self.fill_on(Isa::best(), pattern, out);
+    }
+}
+
+impl FillOn for NRooks {
+    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
+        fill_grid(&self.pattern(pattern), isa, out);
     }
 }

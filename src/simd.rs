@@ -1,0 +1,196 @@
+//! Batched `fill` with runtime dispatch to the widest SIMD instruction set
+//! the CPU has: the crate's one module that needs `unsafe`.
+//!
+//! Every sampler writes its point formula once, as a [`Kernel`] that maps
+//! `N` indices to `N` points with the same integer operations on every lane
+//! and no branch that depends on a lane's value. `sample` runs it with one
+//! lane; `fill` runs it over batches of lanes, and the compiler turns each
+//! batch into SIMD instructions. Because every lane computes exactly what
+//! one-lane `sample` computes (integer arithmetic, one rounding to f32 at
+//! the end), every path gives bit-identical points; the tests below check
+//! each path the running CPU supports against `sample` for every sampler.
+//!
+//! On x86 and x86-64 with `std`, [`Isa::best`] picks AVX-512 (16 lanes),
+//! AVX2 (8 lanes) or the portable loop at run time. Without `std` (no CPU
+//! detection) the portable loop is compiled for whatever
+//! `cfg!(target_feature)` the build enables, for example with
+//! `-C target-cpu=native`.
+
+use glam::Vec2;
+
+/// A sampler's pattern with its per-pattern work done, mapping indices to
+/// points one lane per index.
+pub(crate) trait Kernel {
+    /// Points `index[0], ..., index[N - 1]`: lane `l` is exactly the point
+    /// that `sample(index[l], pattern)` returns.
+    fn points<const N: usize>(&self, index: [u32; N]) -> [Vec2; N];
+}
+
+/// A kernel from a per-index point function with no branch on its lane's
+/// value (the sequences and [`Random`](crate::Random)).
+pub(crate) struct FnKernel<F>(pub(crate) F);
+
+impl<F: Fn(u32) -> Vec2> Kernel for FnKernel<F> {
+    #[inline(always)]
+    fn points<const N: usize>(&self, index: [u32; N]) -> [Vec2; N] {
+        index.map(&self.0)
+    }
+}
+
+/// An instruction set a batched `fill` can run on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Isa {
+    /// Batches of 8 lanes compiled for the build's own target features.
+    Portable,
+    /// Batches of 8 lanes compiled with AVX2 enabled.
+    Avx2,
+    /// Batches of 16 lanes compiled with AVX-512 (F, BW, DQ, VL) enabled.
+    Avx512,
+    /// Batches of 16 lanes compiled like [`Isa::Portable`]: the AVX-512
+    /// path's lane logic, testable on a CPU without AVX-512.
+    #[cfg(test)]
+    PortableWide,
+}
+
+impl Isa {
+    /// Every instruction set, narrowest first.
+    #[cfg(test)]
+    pub(crate) const ALL: [Isa; 4] = [Isa::Portable, Isa::PortableWide, Isa::Avx2, Isa::Avx512];
+
+    /// The widest instruction set this CPU runs (detected once by `std`
+    /// and cached); [`Isa::Portable`] without `std` or off x86.
+    #[inline]
+    pub(crate) fn best() -> Isa {
+        if Isa::Avx512.is_supported() {
+            Isa::Avx512
+        } else if Isa::Avx2.is_supported() {
+            Isa::Avx2
+        } else {
+            Isa::Portable
+        }
+    }
+
+    /// Whether the running CPU has this instruction set.
+    #[inline]
+    pub(crate) fn is_supported(self) -> bool {
+        match self {
+            Isa::Portable => true,
+            #[cfg(test)]
+            Isa::PortableWide => true,
+            #[cfg(all(feature = "std", any(target_arch = "x86", target_arch = "x86_64")))]
+            Isa::Avx2 => std::is_x86_feature_detected!("avx2"),
+            #[cfg(all(feature = "std", any(target_arch = "x86", target_arch = "x86_64")))]
+            Isa::Avx512 => {
+                std::is_x86_feature_detected!("avx512f")
+                    && std::is_x86_feature_detected!("avx512bw")
+                    && std::is_x86_feature_detected!("avx512dq")
+                    && std::is_x86_feature_detected!("avx512vl")
+            }
+            #[cfg(not(all(feature = "std", any(target_arch = "x86", target_arch = "x86_64"))))]
+            Isa::Avx2 | Isa::Avx512 => false,
+        }
+    }
+}
+
+/// Writes `kernel`'s points `start, start + 1, ...` into `out` on
+/// instruction set `isa`, or on the portable loop if the CPU lacks it. Callers keep `start + out.len() <= 2^32`.
+pub(crate) fn fill_on<K: Kernel>(isa: Isa, kernel: &K, start: u32, out: &mut [Vec2]) {
+    debug_assert!(start as u64 + out.len() as u64 <= 1 << 32);
+    #[cfg(all(feature = "std", any(target_arch = "x86", target_arch = "x86_64")))]
+    match isa {
+        Isa::Avx512 if Isa::Avx512.is_supported() => {
+            // SAFETY: `fill_avx512` only requires that the CPU supports the
+            // target features it is compiled with (AVX-512 F, BW, DQ, VL),
+            // which `is_supported` has just detected at run time. It does
+            // nothing else unsafe.
+            #[allow(unsafe_code)]
+            unsafe {
+                fill_avx512(kernel, start, out);
+            }
+            return;
+        }
+        Isa::Avx2 if Isa::Avx2.is_supported() => {
+            // SAFETY: as above, for AVX2, detected just above.
+            #[allow(unsafe_code)]
+            unsafe {
+                fill_avx2(kernel, start, out);
+            }
+            return;
+        }
+        _ => {}
+    }
+    #[cfg(test)]
+    if isa == Isa::PortableWide {
+        return fill_lanes::<K, 16>(kernel, start, out);
+    }
+    let _ = isa;
+    fill_lanes::<K, 8>(kernel, start, out);
+}
+
+#[cfg(all(feature = "std", any(target_arch = "x86", target_arch = "x86_64")))]
+#[target_feature(enable = "avx2")]
+fn fill_avx2<K: Kernel>(kernel: &K, start: u32, out: &mut [Vec2]) {
+    fill_lanes::<K, 8>(kernel, start, out);
+}
+
+#[cfg(all(feature = "std", any(target_arch = "x86", target_arch = "x86_64")))]
+#[target_feature(enable = "avx512f,avx512bw,avx512dq,avx512vl")]
+fn fill_avx512<K: Kernel>(kernel: &K, start: u32, out: &mut [Vec2]) {
+    fill_lanes::<K, 16>(kernel, start, out);
+}
+
+/// The batch loop every path runs: `N` consecutive indices a batch, then
+/// the remainder one lane at a time.
+#[inline(always)]
+fn fill_lanes<K: Kernel, const N: usize>(kernel: &K, start: u32, out: &mut [Vec2]) {
+    let mut chunks = out.chunks_exact_mut(N);
+    let mut base = start;
+    for chunk in &mut chunks {
+        let index: [u32; N] = core::array::from_fn(|lane| base.wrapping_add(lane as u32));
+        chunk.copy_from_slice(&kernel.points(index));
+        base = base.wrapping_add(N as u32);
+    }
+    for (lane, point) in chunks.into_remainder().iter_mut().enumerate() {
+        *point = kernel.points([base.wrapping_add(lane as u32)])[0];
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sampler::FillOn;
+    use crate::{Sampler2D, SamplerKind};
+
+    #[test]
+    fn every_path_is_bit_identical_to_sample() {
+        let supported: std::vec::Vec<Isa> = Isa::ALL
+            .into_iter()
+            .filter(|isa| isa.is_supported())
+            .collect();
+        std::println!("instruction sets on this CPU: {supported:?}");
+        for &kind in SamplerKind::ALL {
+            // Powers of two, squares, primes and non-squares, with lengths
+            // that leave remainders after 8- and 16-lane batches.
+            for n in [
+                1, 2, 3, 5, 7, 8, 12, 16, 17, 31, 64, 100, 256, 257, 1000, 4096,
+            ] {
+                let sampler = kind.build(n).unwrap();
+                for pattern in [0, 1, 0x9e37_79b9, u32::MAX] {
+                    let expected: std::vec::Vec<Vec2> =
+                        (0..n).map(|i| sampler.sample(i, pattern)).collect();
+                    for &isa in &supported {
+                        let mut out = std::vec![Vec2::NAN; n as usize];
+                        sampler.fill_on(isa, pattern, &mut out);
+                        for (i, (a, b)) in out.iter().zip(&expected).enumerate() {
+                            assert_eq!(
+                                (a.x.to_bits(), a.y.to_bits()),
+                                (b.x.to_bits(), b.y.to_bits()),
+                                "{kind} n {n} pattern {pattern:#x} index {i} on {isa:?}"
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
