@@ -26,14 +26,30 @@ pub(crate) trait Kernel {
     fn points<const N: usize>(&self, index: [u32; N]) -> [Vec2; N];
 }
 
-/// A kernel from a per-index point function with no branch on its lane's
-/// value (the sequences and [`Random`](crate::Random)).
-pub(crate) struct FnKernel<F>(pub(crate) F);
+/// A sampler whose points need no work shared across lanes (the sequences
+/// and [`Random`](crate::Random)): one index in, one point out, with no
+/// branch on the index.
+///
+/// Kernels are traits, not closures, throughout: a trait method can be
+/// `#[inline(always)]`, so the whole batch is compiled inside the function
+/// for the detected instruction set. (A closure, or the standard library's
+/// array helpers, may stay an out-of-line call compiled without AVX2.)
+pub(crate) trait PointKernel {
+    /// The point of index `index`.
+    fn point(&self, index: u32) -> Vec2;
+}
 
-impl<F: Fn(u32) -> Vec2> Kernel for FnKernel<F> {
+/// A [`PointKernel`] as a [`Kernel`], one lane per index.
+pub(crate) struct Pointwise<P>(pub(crate) P);
+
+impl<P: PointKernel> Kernel for Pointwise<P> {
     #[inline(always)]
     fn points<const N: usize>(&self, index: [u32; N]) -> [Vec2; N] {
-        index.map(&self.0)
+        let mut out = [Vec2::ZERO; N];
+        for (point, &index) in out.iter_mut().zip(&index) {
+            *point = self.0.point(index);
+        }
+        out
     }
 }
 
@@ -146,7 +162,10 @@ fn fill_lanes<K: Kernel, const N: usize>(kernel: &K, start: u32, out: &mut [Vec2
     let mut chunks = out.chunks_exact_mut(N);
     let mut base = start;
     for chunk in &mut chunks {
-        let index: [u32; N] = core::array::from_fn(|lane| base.wrapping_add(lane as u32));
+        let mut index = [base; N];
+        for (lane, index) in (0..).zip(&mut index) {
+            *index = base.wrapping_add(lane);
+        }
         chunk.copy_from_slice(&kernel.points(index));
         base = base.wrapping_add(N as u32);
     }

@@ -5,7 +5,7 @@
 /// hash-prospector (2018), a search over xorshift-multiply hashes.
 ///
 /// It is a bijection on `u32`, so distinct inputs never collide.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub const fn hash_u32(mut x: u32) -> u32 {
     // Constants and shifts are the search's best two-round result (bias ~0.17).
@@ -19,7 +19,7 @@ pub const fn hash_u32(mut x: u32) -> u32 {
 
 /// Mixes `value` into `seed`: the hash of a pair, used to derive independent
 /// patterns from one seed.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub const fn hash_combine(seed: u32, value: u32) -> u32 {
     // The golden-ratio constant 0x9e3779b9 keeps (seed, 0) from hashing like
@@ -42,7 +42,7 @@ pub const fn hash_combine(seed: u32, value: u32) -> u32 {
 /// assert_ne!(pixel, lens);
 /// assert_eq!(pixel, pattern_seed(10, 20, 0, 0));
 /// ```
-#[inline]
+#[inline(always)]
 #[must_use]
 pub const fn pattern_seed(x: u32, y: u32, frame: u32, dimension: u32) -> u32 {
     hash_combine(hash_combine(hash_combine(hash_u32(x), y), frame), dimension)
@@ -50,7 +50,7 @@ pub const fn pattern_seed(x: u32, y: u32, frame: u32, dimension: u32) -> u32 {
 
 /// 32 random bits for `(index, pattern)`: Kensler 2013's `randfloat` hash
 /// (listing 2) without its final conversion to float.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub const fn rand_u32(index: u32, pattern: u32) -> u32 {
     let mut i = index ^ pattern;

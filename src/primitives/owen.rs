@@ -13,7 +13,7 @@
 /// assert_eq!(radical_inverse_2(1), 1 << 31); // 1/2
 /// assert_eq!(radical_inverse_2(6), 3 << 29); // 0.011 in binary = 3/8
 /// ```
-#[inline]
+#[inline(always)]
 #[must_use]
 pub const fn radical_inverse_2(index: u32) -> u32 {
     index.reverse_bits()
@@ -38,7 +38,7 @@ pub const fn radical_inverse_2(index: u32) -> u32 {
 /// let flip = owen_scramble_reversed(0, 7) & 1;
 /// assert!((0..64).all(|x| (owen_scramble_reversed(x, 7) ^ x) & 1 == flip));
 /// ```
-#[inline]
+#[inline(always)]
 #[must_use]
 pub const fn owen_scramble_reversed(mut x: u32, seed: u32) -> u32 {
     // Burley's seed add and four even multipliers (his improvement on
@@ -69,7 +69,7 @@ pub const fn owen_scramble_reversed(mut x: u32, seed: u32) -> u32 {
 /// block.dedup();
 /// assert_eq!(block.len(), 1); // the first 16 land in one aligned block of 16
 /// ```
-#[inline]
+#[inline(always)]
 #[must_use]
 pub const fn owen_scramble(x: u32, seed: u32) -> u32 {
     owen_scramble_reversed(x.reverse_bits(), seed).reverse_bits()

@@ -118,7 +118,7 @@ const fn permute_mask(len: u32) -> u32 {
     }
 }
 
-/// Rounds of [`permute_hash`] for a domain of `bits` bits (`bits >= 4`).
+/// Rounds of [`round_lanes`] for a domain of `bits` bits (`bits >= 4`).
 /// Four rounds make every output bit depend on every input bit (each
 /// `>> half` moves the top half down, each multiply moves low bits up), and
 /// pass the pair-frequency measurements from 64 elements up (chi-square of
@@ -130,17 +130,10 @@ const fn permute_rounds(bits: u32) -> u32 {
     if bits <= 5 { 5 } else { 4 }
 }
 
-/// One round of [`permute_hash`] with round key `k` (see there).
-#[inline(always)]
-const fn permute_round(i: u32, k: u32, w: u32, half: u32) -> u32 {
-    let i = i.wrapping_add(k);
-    let i = i.wrapping_mul(k.rotate_right(11) | 1) & w;
-    let i = i ^ (i >> half);
-    i ^ ((i >> 1) & k.rotate_right(22))
-}
-
-/// The keyed bijection of the `b`-bit domain under mask `w = 2^b - 1`
-/// that long permutations walk in; `key` is the permutation's key.
+/// One round of the keyed bijection of the `b`-bit domain under mask
+/// `w = 2^b - 1` that long permutations walk in, on every lane, lane `l`
+/// with round key `k[l]`. The permutation's key rotated by `7 r` bits is
+/// round `r`'s key.
 ///
 /// Each round is an add-multiply-xorshift step keyed by 32 bits of `key`,
 /// with every step reaching the whole domain:
@@ -159,15 +152,52 @@ const fn permute_round(i: u32, k: u32, w: u32, half: u32) -> u32 {
 /// round `r` uses `key` rotated by `7 r` bits (coprime to 32, so successive
 /// rounds read different bits).
 #[inline(always)]
-const fn permute_hash(i: u32, key: u32, w: u32, half: u32, rounds: u32) -> u32 {
-    let mut i = permute_round(i, key, w, half);
-    i = permute_round(i, key.rotate_right(7), w, half);
-    i = permute_round(i, key.rotate_right(14), w, half);
-    i = permute_round(i, key.rotate_right(21), w, half);
-    if rounds > 4 {
-        i = permute_round(i, key.rotate_right(28), w, half);
+fn round_lanes<const N: usize>(i: &mut [u32; N], k: &RoundKeys<N>, w: u32, half: u32) {
+    // One operation at a time across the lanes: the shape the compiler's
+    // SIMD vectoriser handles (a long chain per lane defeats it).
+    for (i, add) in i.iter_mut().zip(&k.add) {
+        *i = i.wrapping_add(*add);
     }
-    i
+    for (i, multiplier) in i.iter_mut().zip(&k.multiplier) {
+        *i = i.wrapping_mul(*multiplier) & w;
+    }
+    for i in i.iter_mut() {
+        *i ^= *i >> half;
+    }
+    for (i, gate) in i.iter_mut().zip(&k.gate) {
+        *i ^= (*i >> 1) & gate;
+    }
+}
+
+/// One round's `k`, `k' | 1` and `k''` (see [`round_lanes`]) for each lane.
+struct RoundKeys<const N: usize> {
+    add: [u32; N],
+    multiplier: [u32; N],
+    gate: [u32; N],
+}
+
+impl<const N: usize> RoundKeys<N> {
+    /// The round keys of round key `k`, the same in every lane.
+    #[inline(always)]
+    const fn splat(k: u32) -> Self {
+        Self {
+            add: [k; N],
+            multiplier: [k.rotate_right(11) | 1; N],
+            gate: [k.rotate_right(22); N],
+        }
+    }
+
+    /// The round keys of round key `k[lane]` in each lane.
+    #[inline(always)]
+    fn each(k: &[u32; N]) -> Self {
+        let mut keys = Self::splat(0);
+        for (l, &k) in k.iter().enumerate() {
+            keys.add[l] = k;
+            keys.multiplier[l] = k.rotate_right(11) | 1;
+            keys.gate[l] = k.rotate_right(22);
+        }
+        keys
+    }
 }
 
 /// The identity permutation of `0..8`, one element per nibble.
@@ -248,7 +278,7 @@ impl Permutation {
     /// len)`, so every lane gets exactly what [`apply`](Self::apply) gives.
     #[inline(always)]
     pub(crate) fn apply_lanes<const N: usize>(&self, index: [u32; N]) -> [u32; N] {
-        apply_with(self.len, self.mask, |_| *self, index)
+        apply_with(self.len, self.mask, self, index)
     }
 
     /// Element `index[lane]` of permutation `permutations[lane]`, all of one
@@ -263,51 +293,123 @@ impl Permutation {
             return index;
         };
         debug_assert!(permutations.iter().all(|p| p.len == first.len));
-        apply_with(first.len, first.mask, |lane| permutations[lane], index)
+        apply_with(first.len, first.mask, permutations, index)
+    }
+}
+
+/// The permutation each lane uses: one for all lanes, or one per lane.
+/// (A trait rather than a closure: trait methods can be forced inline, so
+/// the batch stays in the function compiled for the detected SIMD set.)
+trait LanePermutations<const N: usize> {
+    fn lane(&self, lane: usize) -> &Permutation;
+
+    /// The rounds of [`round_lanes`] on every lane under its permutation's
+    /// key.
+    fn hash<const ROUNDS: u32>(&self, i: &mut [u32; N], w: u32, half: u32);
+}
+
+impl<const N: usize> LanePermutations<N> for Permutation {
+    #[inline(always)]
+    fn lane(&self, _: usize) -> &Permutation {
+        self
+    }
+
+    #[inline(always)]
+    fn hash<const ROUNDS: u32>(&self, i: &mut [u32; N], w: u32, half: u32) {
+        // One key for all lanes: its round keys are scalars, broadcast.
+        let round = |i: &mut [u32; N], r: u32| {
+            let k = self.key.rotate_right(7 * r);
+            let keys = RoundKeys::<N>::splat(k);
+            round_lanes(i, &keys, w, half);
+        };
+        round(i, 0);
+        round(i, 1);
+        round(i, 2);
+        round(i, 3);
+        if ROUNDS > 4 {
+            round(i, 4);
+        }
+    }
+}
+
+impl<const N: usize> LanePermutations<N> for [Permutation; N] {
+    #[inline(always)]
+    fn lane(&self, lane: usize) -> &Permutation {
+        &self[lane]
+    }
+
+    #[inline(always)]
+    fn hash<const ROUNDS: u32>(&self, i: &mut [u32; N], w: u32, half: u32) {
+        let mut key = [0; N];
+        for (l, key) in key.iter_mut().enumerate() {
+            *key = self[l].key;
+        }
+        for _ in 0..ROUNDS {
+            round_lanes(i, &RoundKeys::each(&key), w, half);
+            for key in &mut key {
+                *key = key.rotate_right(7);
+            }
+        }
+    }
+}
+
+/// The long permutations' hash of every lane, walked into `[0, len)`.
+#[inline(always)]
+fn hash_and_walk<const ROUNDS: u32, const N: usize>(
+    len: u32,
+    mask: u32,
+    permutations: &impl LanePermutations<N>,
+    i: &mut [u32; N],
+) {
+    let half = (u32::BITS - mask.leading_zeros()).div_ceil(2);
+    permutations.hash::<ROUNDS>(i, mask, half);
+    if mask != len - 1 {
+        while i.iter().any(|&i| i >= len) {
+            let mut next = *i;
+            permutations.hash::<ROUNDS>(&mut next, mask, half);
+            for (i, next) in i.iter_mut().zip(next) {
+                *i = if *i >= len { next } else { *i };
+            }
+        }
     }
 }
 
 /// [`Permutation::apply_lanes`] with lane `l` under permutation
-/// `permutation(l)`, all of length `len` and mask `mask`.
+/// `permutations.lane(l)`, all of length `len` and mask `mask`.
 #[inline(always)]
 fn apply_with<const N: usize>(
     len: u32,
     mask: u32,
-    permutation: impl Fn(usize) -> Permutation,
+    permutations: &impl LanePermutations<N>,
     index: [u32; N],
 ) -> [u32; N] {
     debug_assert!(
         index.iter().all(|&i| i < len),
         "permute index out of range 0..{len}"
     );
+    let mut i = index;
     if len <= SHORT_LEN {
-        // (`& 7` keeps the shift in range for a bad index in release builds.)
-        return core::array::from_fn(|l| {
-            (permutation(l).packed_or_rotation >> ((index[l] & 7) * 4)) & 0xf
-        });
-    }
-    let bits = u32::BITS - mask.leading_zeros();
-    let (half, rounds) = (bits.div_ceil(2), permute_rounds(bits));
-    let hash = |i: u32, l: usize| permute_hash(i, permutation(l).key, mask, half, rounds);
-    let mut i: [u32; N] = core::array::from_fn(|l| hash(index[l], l));
-    if mask != len - 1 {
-        while i.iter().any(|&i| i >= len) {
-            for (l, i) in i.iter_mut().enumerate() {
-                let next = hash(*i, l);
-                *i = if *i >= len { next } else { *i };
-            }
+        for (l, i) in i.iter_mut().enumerate() {
+            // (`& 7` keeps the shift in range for a bad index in release builds.)
+            *i = (permutations.lane(l).packed_or_rotation >> ((*i & 7) * 4)) & 0xf;
         }
+        return i;
+    }
+    // The round count is the same for every lane: chosen outside the lane
+    // loops, which must stay free of branches to run as SIMD.
+    let bits = u32::BITS - mask.leading_zeros();
+    if permute_rounds(bits) > 4 {
+        hash_and_walk::<5, N>(len, mask, permutations, &mut i);
+    } else {
+        hash_and_walk::<4, N>(len, mask, permutations, &mut i);
     }
     // Rotate by `rotation < len` without overflowing u32.
-    core::array::from_fn(|l| {
-        let rotation = permutation(l).packed_or_rotation;
+    for (l, i) in i.iter_mut().enumerate() {
+        let rotation = permutations.lane(l).packed_or_rotation;
         let wrap = len - rotation;
-        if i[l] >= wrap {
-            i[l] - wrap
-        } else {
-            i[l] + rotation
-        }
-    })
+        *i = if *i >= wrap { *i - wrap } else { *i + rotation };
+    }
+    i
 }
 
 #[cfg(test)]

@@ -27,10 +27,19 @@ pub const ONE_MINUS_EPSILON: f32 = 1.0 - f32::EPSILON / 2.0;
 /// assert_eq!(u32_to_unit_f32(0), 0.0);
 /// assert!(u32_to_unit_f32(u32::MAX) < 1.0);
 /// ```
-#[inline]
+#[inline(always)]
 #[must_use]
 pub const fn u32_to_unit_f32(bits: u32) -> f32 {
-    (bits >> (32 - UNIT_BITS)) as f32 * (1.0 / MAX_STRATA as f32)
+    to_unit_f32(bits >> (32 - UNIT_BITS))
+}
+
+/// `t * 2^-24` for `t < 2^24`, exactly. (`t` goes through i32, which it
+/// fits: SIMD units convert signed integers to floats in one instruction
+/// and unsigned ones in several.)
+#[inline(always)]
+const fn to_unit_f32(t: u32) -> f32 {
+    debug_assert!(t < MAX_STRATA);
+    t as i32 as f32 * (1.0 / MAX_STRATA as f32)
 }
 
 /// A float inside stratum `stratum` of `strata` equal strata of `[0, 1)`,
@@ -60,7 +69,7 @@ pub const fn u32_to_unit_f32(bits: u32) -> f32 {
 /// assert!(x < 1.0);
 /// assert_eq!((x as f64 * n as f64).floor() as u32, n - 1);
 /// ```
-#[inline]
+#[inline(always)]
 #[must_use]
 pub const fn stratum_to_unit_f32(stratum: u32, strata: u32, bits: u32) -> f32 {
     debug_assert!(strata >= 1 && strata <= MAX_STRATA && stratum < strata);
@@ -75,7 +84,7 @@ pub const fn stratum_to_unit_f32(stratum: u32, strata: u32, bits: u32) -> f32 {
     } else {
         MAX_STRATA as u64 - 1
     };
-    t as f32 * (1.0 / MAX_STRATA as f32)
+    to_unit_f32(t as u32)
 }
 
 /// The stratum conversion with the strata count's reciprocal prepared once
@@ -133,9 +142,9 @@ impl InvariantDivisor {
 /// 2^24, so there is no clamp either.
 #[inline(always)]
 const fn power_of_two_stratum_to_unit_f32(stratum: u32, k: u32, bits: u32) -> f32 {
-    // (Shifted as u64: at k = 24 the shift is 32.)
-    let t = (stratum << (UNIT_BITS - k)) + ((bits as u64) >> (32 - UNIT_BITS + k)) as u32;
-    t as f32 * (1.0 / MAX_STRATA as f32)
+    // (Two shifts: at k = 24 one shift would be by 32.)
+    let t = (stratum << (UNIT_BITS - k)) + ((bits >> (32 - UNIT_BITS)) >> k);
+    to_unit_f32(t)
 }
 
 #[cfg(test)]

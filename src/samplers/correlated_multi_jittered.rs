@@ -125,7 +125,11 @@ struct ShuffleTable([u32; SMALL_TABLE]);
 impl Shuffle for ShuffleTable {
     #[inline(always)]
     fn shuffle<const N: usize>(&self, index: [u32; N]) -> [u32; N] {
-        index.map(|i| self.0[i as usize % SMALL_TABLE])
+        let mut out = index;
+        for i in &mut out {
+            *i = self.0[*i as usize % SMALL_TABLE];
+        }
+        out
     }
 }
 
@@ -138,22 +142,24 @@ impl<S: Shuffle> GridPattern for CorrelatedMultiJitteredPattern<'_, S> {
     fn points<const POW2: bool, const N: usize>(&self, index: [u32; N]) -> [Vec2; N] {
         let grid = self.grid;
         let cell = self.order.apply_lanes(index);
-        let (row, column): ([u32; N], [u32; N]) = (
-            cell.map(|cell| grid.cell::<POW2>(cell).0),
-            cell.map(|cell| grid.cell::<POW2>(cell).1),
-        );
+        let (mut row, mut column) = ([0; N], [0; N]);
+        for lane in 0..N {
+            (row[lane], column[lane]) = grid.cell::<POW2>(cell[lane]);
+        }
         // One shuffle for all columns, one for all rows: Kensler's
         // correlation.
         let sub_column = self.sub_columns.shuffle(row);
         let sub_row = self.sub_rows.shuffle(column);
-        core::array::from_fn(|l| {
-            grid.latin_point::<POW2>(
-                cell[l],
-                (row[l], column[l]),
-                (sub_column[l], sub_row[l]),
+        let mut out = [Vec2::ZERO; N];
+        for (lane, point) in out.iter_mut().enumerate() {
+            *point = grid.latin_point::<POW2>(
+                cell[lane],
+                (row[lane], column[lane]),
+                (sub_column[lane], sub_row[lane]),
                 &self.jitter,
-            )
-        })
+            );
+        }
+        out
     }
 }
 

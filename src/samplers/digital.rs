@@ -8,7 +8,7 @@
 use glam::Vec2;
 
 use crate::primitives::{hash_u32, owen_scramble_reversed, salt, u32_to_unit_f32};
-use crate::simd::{self, FnKernel, Isa};
+use crate::simd::{self, Isa, PointKernel, Pointwise};
 
 /// Three independent seeds for a shuffled, Owen-scrambled 2D sequence: one
 /// for the index shuffle and one per coordinate.
@@ -62,19 +62,37 @@ pub(crate) const fn bits_to_point((x, y): (u32, u32)) -> Vec2 {
 /// registers; the values are exactly those of `sample`, which calls the
 /// same `point_bits`.
 #[inline(always)]
-pub(crate) fn fill_sequence(
+pub(crate) fn fill_sequence<D: DigitalSequence>(
     isa: Isa,
     start: u32,
     out: &mut [Vec2],
     seeds: OwenSeeds,
-    point_bits: impl Fn(u32, OwenSeeds) -> (u32, u32),
 ) {
-    simd::fill_on(
-        isa,
-        &FnKernel(|index| bits_to_point(point_bits(index, seeds))),
-        start,
-        out,
-    );
+    let kernel = Pointwise(SequenceKernel::<D> {
+        seeds,
+        sequence: core::marker::PhantomData,
+    });
+    simd::fill_on(isa, &kernel, start, out);
+}
+
+/// A shuffled, Owen-scrambled digital (0,2)-sequence: its point formula.
+pub(crate) trait DigitalSequence {
+    /// Point `index` in natural-order 0.32 fixed point, for the pattern
+    /// whose seeds are `seeds`.
+    fn point_bits(index: u32, seeds: OwenSeeds) -> (u32, u32);
+}
+
+/// One pattern of a digital sequence, as a [`PointKernel`].
+struct SequenceKernel<D> {
+    seeds: OwenSeeds,
+    sequence: core::marker::PhantomData<D>,
+}
+
+impl<D: DigitalSequence> PointKernel for SequenceKernel<D> {
+    #[inline(always)]
+    fn point(&self, index: u32) -> Vec2 {
+        bits_to_point(D::point_bits(index, self.seeds))
+    }
 }
 
 #[cfg(test)]

@@ -5,7 +5,7 @@ use crate::primitives::{
     hash_combine, hash_u32, owen_scramble_reversed, salt, stratum_to_unit_f32, u32_to_unit_f32,
 };
 use crate::sampler::{FillOn, Sampler2D, check_fill_len};
-use crate::simd::{self, FnKernel, Isa};
+use crate::simd::{self, Isa, PointKernel, Pointwise};
 
 /// Base-3 digits scrambled per sample: `3^15 = 14_348_907` strata, the most
 /// that fit in the `2^24` f32 strata of `[0, 1)`.
@@ -126,7 +126,7 @@ impl HaltonSeeds {
 }
 
 /// Owen-scrambled base-3 radical inverse of `index` as a float.
-#[inline]
+#[inline(always)]
 fn scrambled_radical_inverse_3(index: u32, seed: u32) -> f32 {
     let mut rest = index;
     let mut stratum = 0u32;
@@ -174,6 +174,13 @@ fn halton_point(index: u32, seeds: HaltonSeeds) -> Vec2 {
     )
 }
 
+impl PointKernel for HaltonSeeds {
+    #[inline(always)]
+    fn point(&self, index: u32) -> Vec2 {
+        halton_point(index, *self)
+    }
+}
+
 impl Sampler2D for Halton {
     #[inline]
     fn len(&self) -> u32 {
@@ -197,7 +204,7 @@ impl FillOn for Halton {
     fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
         check_fill_len(out.len(), self.n);
         let seeds = HaltonSeeds::new(pattern);
-        simd::fill_on(isa, &FnKernel(|index| halton_point(index, seeds)), 0, out);
+        simd::fill_on(isa, &Pointwise(seeds), 0, out);
     }
 }
 

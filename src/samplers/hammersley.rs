@@ -4,7 +4,7 @@ use crate::primitives::{
     InvariantDivisor, MAX_STRATA, hash_u32, owen_scramble_reversed, rand_u32, salt, u32_to_unit_f32,
 };
 use crate::sampler::{FillOn, Sampler2D, check_fill_len, debug_check_index};
-use crate::simd::{self, FnKernel, Isa};
+use crate::simd::{self, Isa, PointKernel, Pointwise};
 use crate::{Error, SamplerKind};
 
 /// The Hammersley set `(i / n, phi_2(i))`, randomised: scrambled.
@@ -117,6 +117,19 @@ impl Hammersley {
     }
 }
 
+/// One pattern of [`Hammersley`]: its hash.
+struct HammersleyKernel<'a> {
+    sampler: &'a Hammersley,
+    seed: u32,
+}
+
+impl PointKernel for HammersleyKernel<'_> {
+    #[inline(always)]
+    fn point(&self, index: u32) -> Vec2 {
+        self.sampler.point(self.seed, index)
+    }
+}
+
 impl Sampler2D for Hammersley {
     #[inline]
     fn len(&self) -> u32 {
@@ -150,6 +163,10 @@ impl FillOn for Hammersley {
     fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
         check_fill_len(out.len(), self.len());
         let seed = hash_u32(pattern);
-        simd::fill_on(isa, &FnKernel(|index| self.point(seed, index)), 0, out);
+        let kernel = HammersleyKernel {
+            sampler: self,
+            seed,
+        };
+        simd::fill_on(isa, &Pointwise(kernel), 0, out);
     }
 }

@@ -121,16 +121,18 @@ impl GridPattern for JitteredPattern<'_> {
 
     #[inline(always)]
     fn points<const POW2: bool, const N: usize>(&self, index: [u32; N]) -> [Vec2; N] {
-        self.order.apply_lanes(index).map(|cell| {
+        let mut out = [Vec2::ZERO; N];
+        for (point, cell) in out.iter_mut().zip(self.order.apply_lanes(index)) {
             let (row, column) = self.grid.cell::<POW2>(cell);
             let (x_bits, y_bits) = self.jitter.bits(cell);
-            Vec2::new(
+            *point = Vec2::new(
                 self.grid
                     .columns
                     .stratum_to_unit_f32_in::<POW2>(column, x_bits),
                 self.grid.rows.stratum_to_unit_f32_in::<POW2>(row, y_bits),
-            )
-        })
+            );
+        }
+        out
     }
 }
 

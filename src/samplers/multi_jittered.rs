@@ -96,22 +96,65 @@ impl MultiJittered {
 }
 
 /// One pattern of [`MultiJittered`]: the order of the cells, each coarse
-/// column's shuffle of its sub-columns (`column_shuffle(column)`) and each
-/// coarse row's shuffle of its sub-rows (`row_shuffle(row)`), computed or
-/// looked up, and the jitter.
-struct MultiJitteredPattern<'a, C, R> {
+/// column's shuffle of its sub-columns and each coarse row's shuffle of its
+/// sub-rows (hashed or looked up), and the jitter.
+struct MultiJitteredPattern<'a, S> {
     grid: &'a Grid,
     order: Permutation,
-    column_shuffle: C,
-    row_shuffle: R,
+    shuffles: S,
     jitter: Jitter,
 }
 
-impl<C, R> GridPattern for MultiJitteredPattern<'_, C, R>
-where
-    C: Fn(u32) -> Permutation,
-    R: Fn(u32) -> Permutation,
-{
+/// Where each coarse line's own shuffle comes from. (A trait rather than
+/// closures: its methods can be forced inline into the SIMD batch.)
+trait LineShuffles {
+    /// Coarse column `column`'s shuffle of its `rows` sub-columns.
+    fn column(&self, column: u32) -> Permutation;
+    /// Coarse row `row`'s shuffle of its `columns` sub-rows.
+    fn row(&self, row: u32) -> Permutation;
+}
+
+/// Each line's shuffle built from a hash of the line: random access.
+#[derive(Clone, Copy)]
+struct HashedLines {
+    columns: u32,
+    rows: u32,
+    seed_x: u32,
+    seed_y: u32,
+}
+
+impl LineShuffles for HashedLines {
+    #[inline(always)]
+    fn column(&self, column: u32) -> Permutation {
+        Permutation::new(self.rows, line_key(self.seed_x, column))
+    }
+
+    #[inline(always)]
+    fn row(&self, row: u32) -> Permutation {
+        Permutation::new(self.columns, line_key(self.seed_y, row))
+    }
+}
+
+/// Every line's shuffle built once, for `fill` on sides up to
+/// [`SMALL_TABLE`].
+struct TabledLines {
+    columns: [Permutation; SMALL_TABLE],
+    rows: [Permutation; SMALL_TABLE],
+}
+
+impl LineShuffles for TabledLines {
+    #[inline(always)]
+    fn column(&self, column: u32) -> Permutation {
+        self.columns[column as usize % SMALL_TABLE]
+    }
+
+    #[inline(always)]
+    fn row(&self, row: u32) -> Permutation {
+        self.rows[row as usize % SMALL_TABLE]
+    }
+}
+
+impl<S: LineShuffles> GridPattern for MultiJitteredPattern<'_, S> {
     fn grid(&self) -> &Grid {
         self.grid
     }
@@ -120,25 +163,30 @@ where
     fn points<const POW2: bool, const N: usize>(&self, index: [u32; N]) -> [Vec2; N] {
         let grid = self.grid;
         let cell = self.order.apply_lanes(index);
-        let (row, column): ([u32; N], [u32; N]) = (
-            cell.map(|cell| grid.cell::<POW2>(cell).0),
-            cell.map(|cell| grid.cell::<POW2>(cell).1),
-        );
-        // Coarse column `column` holds one point per coarse row: the
-        // column's own shuffle of its rows picks which fine column each
-        // point takes. Likewise for rows. Distinct shuffles per column make
-        // it Chiu et al.'s (uncorrelated) multi-jitter.
-        let sub_column =
-            Permutation::apply_each(&column.map(|column| (self.column_shuffle)(column)), row);
-        let sub_row = Permutation::apply_each(&row.map(|row| (self.row_shuffle)(row)), column);
-        core::array::from_fn(|l| {
-            grid.latin_point::<POW2>(
-                cell[l],
-                (row[l], column[l]),
-                (sub_column[l], sub_row[l]),
+        let (mut row, mut column) = ([0; N], [0; N]);
+        let mut column_shuffles = [Permutation::default(); N];
+        let mut row_shuffles = [Permutation::default(); N];
+        for lane in 0..N {
+            (row[lane], column[lane]) = grid.cell::<POW2>(cell[lane]);
+            // Coarse column `column` holds one point per coarse row: the
+            // column's own shuffle of its rows picks which fine column each
+            // point takes. Likewise for rows. Distinct shuffles per column
+            // make it Chiu et al.'s (uncorrelated) multi-jitter.
+            column_shuffles[lane] = self.shuffles.column(column[lane]);
+            row_shuffles[lane] = self.shuffles.row(row[lane]);
+        }
+        let sub_column = Permutation::apply_each(&column_shuffles, row);
+        let sub_row = Permutation::apply_each(&row_shuffles, column);
+        let mut out = [Vec2::ZERO; N];
+        for (lane, point) in out.iter_mut().enumerate() {
+            *point = grid.latin_point::<POW2>(
+                cell[lane],
+                (row[lane], column[lane]),
+                (sub_column[lane], sub_row[lane]),
                 &self.jitter,
-            )
-        })
+            );
+        }
+        out
     }
 }
 
@@ -152,18 +200,17 @@ const fn line_key(seed: u32, line: u32) -> u32 {
 }
 
 impl MultiJittered {
-    fn pattern(
-        &self,
-        pattern: u32,
-    ) -> MultiJitteredPattern<'_, impl Fn(u32) -> Permutation, impl Fn(u32) -> Permutation> {
+    fn pattern(&self, pattern: u32) -> MultiJitteredPattern<'_, HashedLines> {
         let seed = hash_u32(pattern);
-        let (columns, rows) = (self.grid.columns(), self.grid.rows());
-        let (seed_x, seed_y) = (seed ^ salt::SHUFFLE_X, seed ^ salt::SHUFFLE_Y);
         MultiJitteredPattern {
             grid: &self.grid,
             order: Permutation::new(self.len(), derived_key(seed, salt::ORDER)),
-            column_shuffle: move |column| Permutation::new(rows, line_key(seed_x, column)),
-            row_shuffle: move |row| Permutation::new(columns, line_key(seed_y, row)),
+            shuffles: HashedLines {
+                columns: self.grid.columns(),
+                rows: self.grid.rows(),
+                seed_x: seed ^ salt::SHUFFLE_X,
+                seed_y: seed ^ salt::SHUFFLE_Y,
+            },
             jitter: Jitter::new(seed),
         }
     }
@@ -193,13 +240,14 @@ impl FillOn for MultiJittered {
             // There are only `columns + rows` shuffles, each built from a
             // hash (and a Fisher-Yates shuffle for short sides): build them
             // once and look them up.
-            let column_shuffles = small_table(columns, &computed.column_shuffle);
-            let row_shuffles = small_table(rows, &computed.row_shuffle);
+            let hashed = computed.shuffles;
             let tabled = MultiJitteredPattern {
                 grid: computed.grid,
                 order: computed.order,
-                column_shuffle: |column: u32| column_shuffles[column as usize % SMALL_TABLE],
-                row_shuffle: |row: u32| row_shuffles[row as usize % SMALL_TABLE],
+                shuffles: TabledLines {
+                    columns: small_table(columns, |column| hashed.column(column)),
+                    rows: small_table(rows, |row| hashed.row(row)),
+                },
                 jitter: computed.jitter,
             };
             fill_grid(&tabled, isa, out);

@@ -108,13 +108,15 @@ impl GridPattern for NRooksPattern<'_> {
         let columns = self.columns.apply_lanes(index);
         let rows = self.rows.apply_lanes(index);
         let n = self.grid.n;
-        core::array::from_fn(|lane| {
+        let mut out = [Vec2::ZERO; N];
+        for (lane, point) in out.iter_mut().enumerate() {
             let (x_bits, y_bits) = self.jitter.bits(index[lane]);
-            Vec2::new(
+            *point = Vec2::new(
                 n.stratum_to_unit_f32_in::<POW2>(columns[lane], x_bits),
                 n.stratum_to_unit_f32_in::<POW2>(rows[lane], y_bits),
-            )
-        })
+            );
+        }
+        out
     }
 }
 

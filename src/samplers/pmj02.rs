@@ -3,7 +3,9 @@ use glam::Vec2;
 use crate::Error;
 use crate::primitives::owen_scramble;
 use crate::sampler::{FillOn, Sampler2D, check_fill_len};
-use crate::samplers::digital::{OwenSeeds, bits_to_point, fill_sequence, scrambled_bits};
+use crate::samplers::digital::{
+    DigitalSequence, OwenSeeds, bits_to_point, fill_sequence, scrambled_bits,
+};
 use crate::simd::Isa;
 
 /// Progressive multi-jittered (0,2) sequence (pmj02, Christensen, Kensler &
@@ -155,11 +157,13 @@ const fn stirling_y(index: u32) -> u32 {
     (stirling_x(index << 1) >> 1) ^ (0u32.wrapping_sub(index >> 31) & 0x8000_8000)
 }
 
-/// Sample `index` of the sequence, in natural-order 0.32 fixed point.
-#[inline(always)]
-fn pmj02_bits(index: u32, seeds: OwenSeeds) -> (u32, u32) {
-    let s = owen_scramble(index, seeds.index);
-    scrambled_bits(stirling_x(s), stirling_y(s), seeds)
+impl DigitalSequence for Pmj02 {
+    /// Sample `index` of the sequence, in natural-order 0.32 fixed point.
+    #[inline(always)]
+    fn point_bits(index: u32, seeds: OwenSeeds) -> (u32, u32) {
+        let s = owen_scramble(index, seeds.index);
+        scrambled_bits(stirling_x(s), stirling_y(s), seeds)
+    }
 }
 
 impl Sampler2D for Pmj02 {
@@ -172,7 +176,7 @@ impl Sampler2D for Pmj02 {
     /// valid, including those at or above [`len`](Sampler2D::len).
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        bits_to_point(pmj02_bits(index, OwenSeeds::new(pattern)))
+        bits_to_point(Self::point_bits(index, OwenSeeds::new(pattern)))
     }
 
     #[inline]
@@ -184,7 +188,7 @@ impl Sampler2D for Pmj02 {
 impl FillOn for Pmj02 {
     fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
         check_fill_len(out.len(), self.n);
-        fill_sequence(isa, 0, out, OwenSeeds::new(pattern), pmj02_bits);
+        fill_sequence::<Self>(isa, 0, out, OwenSeeds::new(pattern));
     }
 }
 

@@ -3,7 +3,7 @@ use glam::Vec2;
 use crate::Error;
 use crate::primitives::{hash_combine, hash_u32, salt, u32_to_unit_f32};
 use crate::sampler::{FillOn, Sampler2D, check_fill_len, debug_check_index};
-use crate::simd::{self, FnKernel, Isa};
+use crate::simd::{self, Isa, PointKernel, Pointwise};
 
 /// Independent uniform points: the baseline every other sampler must beat.
 ///
@@ -77,6 +77,18 @@ impl Random {
     }
 }
 
+/// One pattern of [`Random`]: its hash.
+struct RandomKernel {
+    seed: u32,
+}
+
+impl PointKernel for RandomKernel {
+    #[inline(always)]
+    fn point(&self, index: u32) -> Vec2 {
+        Random::point(self.seed, index)
+    }
+}
+
 impl Sampler2D for Random {
     #[inline]
     fn len(&self) -> u32 {
@@ -99,6 +111,6 @@ impl FillOn for Random {
         check_fill_len(out.len(), self.n);
         // The pattern hash once per set: three hashes per sample, not four.
         let seed = hash_u32(pattern);
-        simd::fill_on(isa, &FnKernel(|index| Self::point(seed, index)), 0, out);
+        simd::fill_on(isa, &Pointwise(RandomKernel { seed }), 0, out);
     }
 }

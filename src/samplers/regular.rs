@@ -112,16 +112,18 @@ impl GridPattern for RegularPattern<'_> {
 
     #[inline(always)]
     fn points<const POW2: bool, const N: usize>(&self, index: [u32; N]) -> [Vec2; N] {
-        self.order.apply_lanes(index).map(|cell| {
+        let mut out = [Vec2::ZERO; N];
+        for (point, cell) in out.iter_mut().zip(self.order.apply_lanes(index)) {
             let (row, column) = self.grid.cell::<POW2>(cell);
             // Half-way bits put the point at the cell's centre, to within 2^-24.
-            Vec2::new(
+            *point = Vec2::new(
                 self.grid
                     .columns
                     .stratum_to_unit_f32_in::<POW2>(column, 1 << 31),
                 self.grid.rows.stratum_to_unit_f32_in::<POW2>(row, 1 << 31),
-            )
-        })
+            );
+        }
+        out
     }
 }
 

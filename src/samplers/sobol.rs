@@ -3,7 +3,9 @@ use glam::Vec2;
 use crate::Error;
 use crate::primitives::owen_scramble;
 use crate::sampler::{FillOn, Sampler2D, check_fill_len};
-use crate::samplers::digital::{OwenSeeds, bits_to_point, fill_sequence, scrambled_bits};
+use crate::samplers::digital::{
+    DigitalSequence, OwenSeeds, bits_to_point, fill_sequence, scrambled_bits,
+};
 use crate::simd::Isa;
 
 /// The first two dimensions of the Sobol sequence, Owen-scrambled with
@@ -155,12 +157,13 @@ pub(crate) const fn pascal_reversed(index: u32) -> u32 {
     y
 }
 
-/// Sample `index` of the sequence, in natural-order 0.32 fixed point.
-#[inline(always)]
-fn sobol_bits(index: u32, seeds: OwenSeeds) -> (u32, u32) {
-    let s = owen_scramble(index, seeds.index);
-    // Dimension 0's generator is the identity: its reversed digits are `s`.
-    scrambled_bits(s, pascal_reversed(s), seeds)
+impl DigitalSequence for Sobol {
+    #[inline(always)]
+    fn point_bits(index: u32, seeds: OwenSeeds) -> (u32, u32) {
+        let s = owen_scramble(index, seeds.index);
+        // Dimension 0's generator is the identity: its reversed digits are `s`.
+        scrambled_bits(s, pascal_reversed(s), seeds)
+    }
 }
 
 impl Sampler2D for Sobol {
@@ -173,7 +176,7 @@ impl Sampler2D for Sobol {
     /// valid, including those at or above [`len`](Sampler2D::len).
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        bits_to_point(sobol_bits(index, OwenSeeds::new(pattern)))
+        bits_to_point(Self::point_bits(index, OwenSeeds::new(pattern)))
     }
 
     #[inline]
@@ -185,7 +188,7 @@ impl Sampler2D for Sobol {
 impl FillOn for Sobol {
     fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
         check_fill_len(out.len(), self.n);
-        fill_sequence(isa, 0, out, OwenSeeds::new(pattern), sobol_bits);
+        fill_sequence::<Self>(isa, 0, out, OwenSeeds::new(pattern));
     }
 }
 
