@@ -15,9 +15,12 @@
 //!   `sobol_burley::sample` calls, dimensions 0 and 1, per point),
 //!   correlated-multi-jittered and sobol.
 //!
-//! The table uses only estimates written during this run (criterion's
-//! `estimates.json`, by modification time), so a filtered run shows `-`
-//! rather than an older number. It goes to stdout and, as markdown headed by
+//! Each baseline runs first and last in its group (`<name>` and
+//! `<name>-again`); the ratio divides the sampler's median by the faster of
+//! the two baseline medians, and marks the cell `~` when they differ by more
+//! than 20% (the shared machine was busy). The table uses only estimates
+//! written during this run (criterion's `estimates.json`, by modification
+//! time), so a filtered run shows `-` rather than an older number. It goes to stdout and, as markdown headed by
 //! the rustc version, `RUSTFLAGS`, the target features compiled in and the
 //! CPU model, to `<target>/speed-ratios.md` (`speed-ratios-native.md` when
 //! `RUSTFLAGS` asks for `target-cpu=native`, `speed-ratios-custom.md` for
@@ -37,8 +40,12 @@ use wellspread::{
 
 use crate::kensler;
 use crate::sampler_benches::{
-    SIZES, configure, mean_ns, pcg, pcg32_vec2, scattered, sobol_vec2, target_dir,
+    SIZES, configure, estimate_ns, pcg, pcg32_vec2, scattered, sobol_vec2, target_dir,
 };
+
+/// Two runs of one baseline in one group further apart than this factor
+/// mark the cell `~`: the machine was busy, the ratio is not to be trusted.
+const NOISY: f64 = 1.2;
 
 /// One row of the table: `numerator / denominator` in `group`, and its limit.
 struct Row {
@@ -126,14 +133,17 @@ fn fill_group(c: &mut Criterion, n: u32) {
     configure(&mut group, n);
     let mut out = vec![Vec2::ZERO; n as usize];
     let mut rng = pcg();
-    group.bench_function(BenchmarkId::new("baseline", "pcg32"), |b| {
-        b.iter(|| {
-            for p in out.iter_mut() {
-                *p = pcg32_vec2(&mut rng);
-            }
-            black_box(&mut out);
-        })
-    });
+    let mut pcg32_fill = |group: &mut BenchmarkGroup<'_, WallTime>, out: &mut [Vec2], id| {
+        group.bench_function(BenchmarkId::new("baseline", id), |b| {
+            b.iter(|| {
+                for p in out.iter_mut() {
+                    *p = pcg32_vec2(&mut rng);
+                }
+                black_box(&mut *out);
+            })
+        });
+    };
+    pcg32_fill(&mut group, &mut out, "pcg32");
     fill_one(&mut group, "jittered", &Jittered::new(n).unwrap(), &mut out);
     fill_one(&mut group, "n-rooks", &NRooks::new(n).unwrap(), &mut out);
     fill_one(
@@ -150,6 +160,7 @@ fn fill_group(c: &mut Criterion, n: u32) {
     );
     fill_one(&mut group, "sobol", &Sobol::new(n).unwrap(), &mut out);
     fill_one(&mut group, "pmj02", &Pmj02::new(n).unwrap(), &mut out);
+    pcg32_fill(&mut group, &mut out, "pcg32-again");
     group.finish();
 }
 
@@ -163,23 +174,33 @@ fn scattered_group(c: &mut Criterion, n: u32) {
     if n <= 256 {
         kensler::check(m, k);
     }
-    group.bench_function(BenchmarkId::new("baseline", "kensler"), |b| {
-        let (m, k) = black_box((m, k));
-        b.iter(|| {
-            for &(i, p) in &pairs {
-                black_box(kensler::cmj(i, m, k, p));
-            }
-        })
-    });
-    group.bench_function(BenchmarkId::new("baseline", "sobol_burley"), |b| {
-        b.iter(|| {
-            for &(i, p) in &pairs {
-                black_box(sobol_vec2(i, p));
-            }
-        })
-    });
+    let baselines = |group: &mut BenchmarkGroup<'_, WallTime>, suffix: &str| {
+        group.bench_function(
+            BenchmarkId::new("baseline", format!("kensler{suffix}")),
+            |b| {
+                let (m, k) = black_box((m, k));
+                b.iter(|| {
+                    for &(i, p) in &pairs {
+                        black_box(kensler::cmj(i, m, k, p));
+                    }
+                })
+            },
+        );
+        group.bench_function(
+            BenchmarkId::new("baseline", format!("sobol_burley{suffix}")),
+            |b| {
+                b.iter(|| {
+                    for &(i, p) in &pairs {
+                        black_box(sobol_vec2(i, p));
+                    }
+                })
+            },
+        );
+    };
+    baselines(&mut group, "");
     scattered_one(&mut group, "correlated-multi-jittered", &cmj, &pairs);
     scattered_one(&mut group, "sobol", &Sobol::new(n).unwrap(), &pairs);
+    baselines(&mut group, "-again");
     group.finish();
 }
 
@@ -209,14 +230,24 @@ fn table(since: SystemTime) -> String {
         );
         for n in SIZES {
             let group = format!("{}/{n}", row.group);
+            let median = |id: &str| estimate_ns(&group, id, since, "median");
+            let again = format!("{}-again", row.denominator);
             let cell = match (
-                mean_ns(&group, row.numerator, since),
-                mean_ns(&group, row.denominator, since),
+                median(row.numerator),
+                median(row.denominator),
+                median(&again),
             ) {
-                (Some(a), Some(b)) => {
+                (Some(a), Some(b1), b2) => {
+                    // The baseline ran first and last in its group; the
+                    // faster run is the one the machine disturbed less.
+                    let b = b2.map_or(b1, |b2| b1.min(b2));
                     let ratio = a / b;
                     let mark = if ratio <= row.limit { "pass" } else { "MISS" };
-                    format!("{ratio:.2}x {mark}")
+                    let noisy = match b2 {
+                        Some(b2) if b1.max(b2) > NOISY * b1.min(b2) => " ~",
+                        _ => "",
+                    };
+                    format!("{ratio:.2}x {mark}{noisy}")
                 }
                 _ => "-".to_owned(),
             };
@@ -310,9 +341,13 @@ fn report(since: SystemTime) {
     let _ = writeln!(md, "- CPU: {}", cpu_model());
     let _ = writeln!(
         md,
-        "\nEach ratio is (time of the sampler) / (time of its baseline), both \
-         criterion means from the same group of this run; `-` means the pair \
-         did not run.\n"
+        "\nEach ratio is (time of the sampler) / (time of its baseline): \
+         criterion medians from the same group of this run. Each baseline \
+         runs first and last in its group and the faster of the two counts; \
+         `~` marks a cell whose two baseline runs differ by more than {:.0}% \
+         (a busy machine: re-run before quoting it), and `-` a pair that did \
+         not run.\n",
+        (NOISY - 1.0) * 100.0
     );
     md.push_str(&table(since));
     println!("\n{md}");

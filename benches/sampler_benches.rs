@@ -249,6 +249,17 @@ fn criterion_dir() -> PathBuf {
 /// directories). Older files, from runs that a filter left out this time,
 /// count as not run.
 pub(crate) fn mean_ns(group: &str, id: &str, since: SystemTime) -> Option<f64> {
+    estimate_ns(group, id, since, "mean")
+}
+
+/// Like [`mean_ns`], for any statistic criterion estimates (`"mean"`,
+/// `"median"`, ...).
+pub(crate) fn estimate_ns(
+    group: &str,
+    id: &str,
+    since: SystemTime,
+    statistic: &str,
+) -> Option<f64> {
     let path = criterion_dir()
         .join(group.replace('/', "_"))
         .join(id)
@@ -257,8 +268,8 @@ pub(crate) fn mean_ns(group: &str, id: &str, since: SystemTime) -> Option<f64> {
         return None;
     }
     let json = std::fs::read_to_string(path).ok()?;
-    let mean = &json[json.find("\"mean\"")?..];
-    let value = &mean[mean.find("\"point_estimate\":")? + "\"point_estimate\":".len()..];
+    let estimate = &json[json.find(&format!("\"{statistic}\""))?..];
+    let value = &estimate[estimate.find("\"point_estimate\":")? + "\"point_estimate\":".len()..];
     let end = value.find([',', '}'])?;
     value[..end].trim().parse().ok()
 }
