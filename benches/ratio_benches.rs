@@ -24,7 +24,10 @@
 //! the rustc version, `RUSTFLAGS`, the target features compiled in and the
 //! CPU model, to `<target>/speed-ratios.md` (`speed-ratios-native.md` when
 //! `RUSTFLAGS` asks for `target-cpu=native`, `speed-ratios-custom.md` for
-//! other flags), so that both builds can be kept side by side.
+//! other flags), so that both builds can be kept side by side. A separate
+//! target directory keeps both builds' caches:
+//! `CARGO_TARGET_DIR=target/native RUSTFLAGS="-C target-cpu=native" cargo
+//! bench --bench speed -- ratio` writes `target/native/speed-ratios-native.md`.
 
 use std::fmt::Write as _;
 use std::hint::black_box;
@@ -311,8 +314,14 @@ fn report(since: SystemTime) {
         .skip(1)
         .filter(|a| a != "--bench")
         .collect();
+    let target_dir = std::env::var("CARGO_TARGET_DIR").unwrap_or_default();
     let command = format!(
-        "{}cargo bench --bench speed{}",
+        "{}{}cargo bench --bench speed{}",
+        if target_dir.is_empty() {
+            String::new()
+        } else {
+            format!("CARGO_TARGET_DIR={target_dir} ")
+        },
         if rustflags.is_empty() {
             String::new()
         } else {
