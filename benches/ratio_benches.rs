@@ -314,13 +314,13 @@ fn report(since: SystemTime) {
         .skip(1)
         .filter(|a| a != "--bench")
         .collect();
-    let target_dir = std::env::var("CARGO_TARGET_DIR").unwrap_or_default();
+    let target_env = std::env::var("CARGO_TARGET_DIR").unwrap_or_default();
     let command = format!(
         "{}{}cargo bench --bench speed{}",
-        if target_dir.is_empty() {
+        if target_env.is_empty() {
             String::new()
         } else {
-            format!("CARGO_TARGET_DIR={target_dir} ")
+            format!("CARGO_TARGET_DIR={target_env} ")
         },
         if rustflags.is_empty() {
             String::new()
