@@ -20,14 +20,18 @@
 //! the two baseline medians, and marks the cell `~` when they differ by more
 //! than 20% (the shared machine was busy). The table uses only estimates
 //! written during this run (criterion's `estimates.json`, by modification
-//! time), so a filtered run shows `-` rather than an older number. It goes to stdout and, as markdown headed by
-//! the rustc version, `RUSTFLAGS`, the target features compiled in and the
-//! CPU model, to `<target>/speed-ratios.md` (`speed-ratios-native.md` when
+//! time), so a filtered run shows `-` rather than an older number. It goes
+//! to stdout and, as markdown headed by the rustc version, `RUSTFLAGS`, the
+//! target features compiled in and the CPU model, to `<target>/speed-ratios.md` (`speed-ratios-native.md` when
 //! `RUSTFLAGS` asks for `target-cpu=native`, `speed-ratios-custom.md` for
 //! other flags), so that both builds can be kept side by side. A separate
 //! target directory keeps both builds' caches:
 //! `CARGO_TARGET_DIR=target/native RUSTFLAGS="-C target-cpu=native" cargo
 //! bench --bench speed -- ratio` writes `target/native/speed-ratios-native.md`.
+//!
+//! Time: the ratio groups alone take about 2 minutes after the build; the
+//! whole `cargo bench --bench speed` about 16 (10 for the sampler groups, 4
+//! for the metrics), measured on the shared 2-vCPU machine.
 
 use std::fmt::Write as _;
 use std::hint::black_box;
