@@ -14,6 +14,8 @@
 //! | [`is_latin`] | one point per row and column of n x n | O(n) | O(n) |
 //! | [`is_stratified`] | n / (columns rows) points per cell | O(n) | O(columns rows) |
 //! | [`is_net_base2`] | (0, m, 2)-net in base 2 | O(n log n) | O(n) |
+//! | [`net_t_value`] | smallest t of a (t, m, 2)-net in base 2 | O(n log n log log n) | O(n) |
+//! | [`radial_power_spectrum`] | periodogram averaged over rings of \|k\| | O(n K²) for K frequencies | O(min(K², 2^20)) |
 //!
 //! Every metric checks its input first and returns an [`Error`] naming the
 //! first offending point for an empty set, a NaN or infinite coordinate, or a
@@ -37,6 +39,7 @@
 
 mod discrepancy;
 mod distance;
+mod spectrum;
 mod stratification;
 
 pub use crate::Error;
@@ -46,7 +49,8 @@ pub use discrepancy::{
     centered_l2_discrepancy, l2_star_discrepancy, star_discrepancy, wraparound_l2_discrepancy,
 };
 pub use distance::{min_distance, normalized_toroidal_min_distance, toroidal_min_distance};
-pub use stratification::{is_latin, is_net_base2, is_stratified};
+pub use spectrum::{MAX_SPECTRUM_FREQUENCY, radial_power_spectrum};
+pub use stratification::{is_latin, is_net_base2, is_stratified, net_t_value};
 
 /// Checks that `points` is non-empty and inside `[0, 1)^2`, naming the first
 /// offending point. `-0.0` passes (it compares equal to `0.0`).
