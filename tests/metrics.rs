@@ -7,6 +7,7 @@ use wellspread::metrics::{
     Error, MAX_SPECTRUM_FREQUENCY, centered_l2_discrepancy, is_latin, is_net_base2, is_stratified,
     l2_star_discrepancy, min_distance, net_t_value, normalized_toroidal_min_distance,
     radial_power_spectrum, star_discrepancy, toroidal_min_distance, wraparound_l2_discrepancy,
+    wraparound_l2_discrepancy_quadratic,
 };
 use wellspread::{Pmj02, Sampler2D, Sobol};
 
@@ -584,7 +585,7 @@ fn wraparound_does_not_depend_on_the_thread_count() {
             .num_threads(threads)
             .build()
             .unwrap()
-            .install(|| wraparound_l2_discrepancy(&points).unwrap())
+            .install(|| wraparound_l2_discrepancy_quadratic(&points).unwrap())
     };
     let one = run(1);
     assert_eq!(one.to_bits(), run(2).to_bits());
@@ -1162,4 +1163,85 @@ fn spectrum_rejects_bad_frequencies() {
         msg.contains("from 1 to 65536") && msg.contains("got 0"),
         "{msg}"
     );
+}
+
+// --------------------------------------------- wrap-around, fast vs direct
+
+/// The families the O(n log n) wrap-around code must agree on with the
+/// direct double sum: random, lattices, duplicates, ties, clusters, nets.
+fn wraparound_families(n: usize) -> Vec<(&'static str, Vec<Vec2>)> {
+    let nf = n as f32;
+    let mut rng = Mix(n as u64);
+    // Rank-1 lattice with a golden-ratio generator.
+    let g = ((n as f64) * 0.618_033_988_749_895).round() as usize | 1;
+    let lattice: Vec<Vec2> = (0..n)
+        .map(|i| Vec2::new(i as f32 / nf, ((i * g) % n) as f32 / nf))
+        .collect();
+    let side = (n as f64).sqrt().ceil() as usize;
+    let grid: Vec<Vec2> = (0..n)
+        .map(|i| {
+            Vec2::new(
+                (i % side) as f32 / side as f32,
+                (i / side) as f32 / side as f32,
+            )
+        })
+        .collect();
+    let few: Vec<Vec2> = (0..n)
+        .map(|_| Vec2::new((rng.next() % 5) as f32 / 5.0, (rng.next() % 3) as f32 / 3.0))
+        .collect();
+    let mut duplicated = random_points(n.div_ceil(4), 77);
+    duplicated = duplicated.iter().cycle().take(n).copied().collect();
+    let cluster: Vec<Vec2> = (0..n)
+        .map(|_| Vec2::new(0.7 + rng.unit() * 1e-4, 0.2 + rng.unit() * 1e-4))
+        .collect();
+    let tiny: Vec<Vec2> = (0..n)
+        .map(|_| {
+            Vec2::new(
+                rng.unit() * 1e-30,
+                f32::from_bits((rng.next() % 0x3f80_0000) as u32),
+            )
+        })
+        .collect();
+    let two_blobs: Vec<Vec2> = (0..n)
+        .map(|i| {
+            let o = if i % 2 == 0 { 0.1 } else { 0.85 };
+            Vec2::new(o + rng.unit() * 0.01, o + rng.unit() * 0.01)
+        })
+        .collect();
+    let mut sobol = vec![Vec2::ZERO; n];
+    Sobol::new(n as u32).unwrap().fill(9, &mut sobol);
+    let mut pmj = vec![Vec2::ZERO; n];
+    Pmj02::new(n as u32).unwrap().fill(9, &mut pmj);
+    let diagonal: Vec<Vec2> = (0..n).map(|i| Vec2::splat(i as f32 / nf)).collect();
+    vec![
+        ("random", random_points(n, 12)),
+        ("lattice", lattice),
+        ("grid", grid),
+        ("few values", few),
+        ("duplicated", duplicated),
+        ("one point repeated", vec![Vec2::new(0.3, 0.8); n]),
+        ("cluster", cluster),
+        ("tiny and any f32", tiny),
+        ("two blobs", two_blobs),
+        ("sobol", sobol),
+        ("pmj02", pmj),
+        ("diagonal", diagonal),
+    ]
+}
+
+#[test]
+fn wraparound_matches_the_direct_sum_on_hard_families() {
+    // The direct sum takes about 1.5 s at 2^14: the five families the
+    // cancellation is hardest on run there, all of them below.
+    let hardest = ["random", "lattice", "few values", "duplicated", "cluster"];
+    for n in [1usize, 2, 3, 16, 100, 1000, 4096, 1 << 14] {
+        for (name, points) in wraparound_families(n) {
+            if n > 4096 && !hardest.contains(&name) {
+                continue;
+            }
+            let fast = wraparound_l2_discrepancy(&points).unwrap();
+            let direct = wraparound_l2_discrepancy_quadratic(&points).unwrap();
+            assert_close(&format!("{name}, n = {n}"), fast, direct, 1e-12);
+        }
+    }
 }

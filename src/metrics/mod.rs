@@ -7,7 +7,7 @@
 //! | [`star_discrepancy`] | worst anchored box, exact | O(n log² n) amortised | O(n) |
 //! | [`l2_star_discrepancy`] | RMS of the local discrepancy (Warnock) | O(n log n) | O(n) |
 //! | [`centered_l2_discrepancy`] | Hickernell's centred L2 | O(n log n) | O(n) |
-//! | [`wraparound_l2_discrepancy`] | Hickernell's wrap-around L2 | O(n²), parallel with `rayon` | O(1) |
+//! | [`wraparound_l2_discrepancy`] | Hickernell's wrap-around L2 | O(n log n) | O(n) |
 //! | [`min_distance`] | closest pair | O(n) expected | O(n) |
 //! | [`toroidal_min_distance`] | closest pair on the torus | O(n) expected | O(n) |
 //! | [`normalized_toroidal_min_distance`] | the above over the hexagonal bound | O(n) expected | O(n) |
@@ -39,12 +39,15 @@
 
 mod discrepancy;
 mod distance;
+mod double_double;
 mod spectrum;
 mod stratification;
 
 pub use crate::Error;
 pub use glam::Vec2;
 
+#[doc(hidden)]
+pub use discrepancy::wraparound_l2_discrepancy_quadratic;
 pub use discrepancy::{
     centered_l2_discrepancy, l2_star_discrepancy, star_discrepancy, wraparound_l2_discrepancy,
 };
@@ -107,5 +110,40 @@ impl Sum {
     #[inline]
     pub(crate) fn value(self) -> f64 {
         self.sum + self.compensation
+    }
+}
+
+/// Stable LSD radix sort of `items` by the low `bits` bits of `key`, in
+/// passes of 11 bits: O(n bits / 11) time, one scratch copy of `items`.
+pub(crate) fn radix_sort<T: Copy + Default>(
+    items: &mut alloc::vec::Vec<T>,
+    key: impl Fn(&T) -> u64,
+    bits: u32,
+) {
+    const DIGIT: u32 = 11;
+    let mut scratch = alloc::vec![T::default(); items.len()];
+    let mut shift = 0;
+    while shift < bits {
+        let digit = |item: &T| ((key(item) >> shift) & ((1 << DIGIT) - 1)) as usize;
+        let mut start = [0usize; 1 << DIGIT];
+        for item in items.iter() {
+            start[digit(item)] += 1;
+        }
+        // A pass where every item has the same digit changes nothing.
+        if start.iter().any(|&c| c == items.len()) {
+            shift += DIGIT;
+            continue;
+        }
+        let mut total = 0;
+        for c in start.iter_mut() {
+            (*c, total) = (total, total + *c);
+        }
+        for item in items.iter() {
+            let d = digit(item);
+            scratch[start[d]] = *item;
+            start[d] += 1;
+        }
+        core::mem::swap(items, &mut scratch);
+        shift += DIGIT;
     }
 }
