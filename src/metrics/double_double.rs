@@ -150,15 +150,15 @@ mod tests {
         // (1 + e)² = 1 + 2e + e², with e² below one ulp of the product.
         assert_eq!(p.hi, 1.0 + 2.0 * f64::EPSILON);
         assert_eq!(p.lo, f64::EPSILON * f64::EPSILON);
-        let s = Dd::ZERO.add_f64(1.0).add_f64(1e-30).add_f64(-1.0);
+        let s = Dd::ZERO.plus_f64(1.0).plus_f64(1e-30).plus_f64(-1.0);
         assert_eq!(s.value(), 1e-30);
         let third = Dd::ratio(1.0, 3.0);
-        let back = third.mul_f64(3.0).add_f64(-1.0);
+        let back = third.mul_f64(3.0).plus_f64(-1.0);
         assert!(back.value().abs() < 1e-31);
         let q = third.mul(third).sub(Dd::ratio(1.0, 9.0));
         assert!(q.value().abs() < 1e-31);
         // 3 (1/3) with the short product, and a lazy sum that cancels.
-        let back = third.mul_short(3.0).add_f64(-1.0);
+        let back = third.mul_short(3.0).plus_f64(-1.0);
         assert!(back.value().abs() < 1e-31);
         let lazy = Dd::ZERO
             .plus_f64(1.0)
