@@ -1245,3 +1245,108 @@ fn wraparound_matches_the_direct_sum_on_hard_families() {
         }
     }
 }
+
+// ------------------------------------------- min distance, crowded sets
+
+/// Sets that put many points in few cells of a bounding-box grid: the
+/// diagonal, dense lattice blobs (also across the seams), a line of random
+/// points, a cluster inside a spread-out set.
+fn crowded_families() -> Vec<(&'static str, Vec<Vec2>)> {
+    let mut rng = Mix(61);
+    let n = 3000;
+    let diagonal: Vec<Vec2> = (0..n).map(|i| Vec2::splat(i as f32 / n as f32)).collect();
+    let anti: Vec<Vec2> = (0..n)
+        .map(|i| Vec2::new(i as f32 / n as f32, 1.0 - (i + 1) as f32 / n as f32))
+        .collect();
+    let spacing = 1.0 / (1u32 << 17) as f32;
+    let blob = |ox: f32, oy: f32, side: usize| -> Vec<Vec2> {
+        (0..side * side)
+            .map(|i| {
+                let x = ox + (i % side) as f32 * spacing;
+                let y = oy + (i / side) as f32 * spacing;
+                Vec2::new(x % 1.0, y % 1.0)
+            })
+            .collect()
+    };
+    let mut blobs = blob(0.25, 0.25, 40);
+    blobs.extend(blob(0.75, 0.75, 40));
+    // Across the corner of the torus: the blob wraps around both seams.
+    let mut corner = blob(1.0 - 20.5 * spacing, 1.0 - 20.5 * spacing, 40);
+    corner.extend(blob(0.5, 0.5, 30));
+    let line: Vec<Vec2> = (0..n)
+        .map(|_| {
+            let t = rng.unit();
+            Vec2::new(t, (0.3 + 0.4 * t).min(0.999))
+        })
+        .collect();
+    let mut cluster = random_points(2000, 62);
+    cluster.extend((0..2000).map(|_| Vec2::new(0.5 + rng.unit() * 1e-5, 0.5 + rng.unit() * 1e-5)));
+    // Two far clusters hugging opposite seams: close only on the torus.
+    let seams: Vec<Vec2> = (0..n)
+        .map(|i| {
+            let t = rng.unit() * 1e-3;
+            if i % 2 == 0 {
+                Vec2::new(t, 0.5 + t)
+            } else {
+                Vec2::new(1.0 - spacing - t, 0.5 + t * 0.5)
+            }
+        })
+        .collect();
+    vec![
+        ("diagonal", diagonal),
+        ("anti-diagonal", anti),
+        ("two blobs", blobs),
+        ("corner blob", corner),
+        ("line", line),
+        ("cluster", cluster),
+        ("seams", seams),
+    ]
+}
+
+#[test]
+fn min_distances_match_brute_force_on_crowded_sets() {
+    for (name, points) in crowded_families() {
+        assert_eq!(
+            min_distance(&points).unwrap(),
+            brute_min_distance(&points, false),
+            "{name}"
+        );
+        assert_eq!(
+            toroidal_min_distance(&points).unwrap(),
+            brute_min_distance(&points, true),
+            "{name}, torus"
+        );
+    }
+}
+
+/// Sets of up to 300 points crowded onto a line, a few cells or a corner.
+fn crowded_points() -> impl Strategy<Value = Vec<Vec2>> {
+    let shape = 0u32..4;
+    let ts = prop::collection::vec((0u32..1 << 24, 0u32..1 << 24), 2..300);
+    (shape, ts).prop_map(|(shape, ts)| {
+        ts.iter()
+            .map(|&(a, b)| {
+                let (u, v) = (
+                    a as f32 / (1u32 << 24) as f32,
+                    b as f32 / (1u32 << 24) as f32,
+                );
+                match shape {
+                    0 => Vec2::new(u, u),
+                    1 => Vec2::new(u, (u * 0.5 + v * 1e-6).min(0.999)),
+                    2 => Vec2::new((0.999 + u * 1e-3) % 1.0, (0.999 + v * 1e-3) % 1.0),
+                    _ => Vec2::new((a % 3) as f32 / 3.0 + v * 1e-4, (b % 2) as f32 / 2.0),
+                }
+            })
+            .collect()
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    #[test]
+    fn min_distances_on_crowded_sets_match_brute_force(points in crowded_points()) {
+        prop_assert_eq!(min_distance(&points).unwrap(), brute_min_distance(&points, false));
+        prop_assert_eq!(toroidal_min_distance(&points).unwrap(), brute_min_distance(&points, true));
+    }
+}

@@ -114,36 +114,39 @@ impl Sum {
 }
 
 /// Stable LSD radix sort of `items` by the low `bits` bits of `key`, in
-/// passes of 11 bits: O(n bits / 11) time, one scratch copy of `items`.
+/// passes of 11 bits (all digit counts taken in one first pass; digits that
+/// are the same for every item are skipped): O(n bits / 11) time, one scratch
+/// copy of `items`.
 pub(crate) fn radix_sort<T: Copy + Default>(
     items: &mut alloc::vec::Vec<T>,
     key: impl Fn(&T) -> u64,
     bits: u32,
 ) {
     const DIGIT: u32 = 11;
-    let mut scratch = alloc::vec![T::default(); items.len()];
-    let mut shift = 0;
-    while shift < bits {
-        let digit = |item: &T| ((key(item) >> shift) & ((1 << DIGIT) - 1)) as usize;
-        let mut start = [0usize; 1 << DIGIT];
-        for item in items.iter() {
-            start[digit(item)] += 1;
+    const MASK: u64 = (1 << DIGIT) - 1;
+    let passes = bits.div_ceil(DIGIT) as usize;
+    let mut counts = alloc::vec![[0usize; 1 << DIGIT]; passes];
+    for item in items.iter() {
+        let k = key(item);
+        for (pass, count) in counts.iter_mut().enumerate() {
+            count[((k >> (pass as u32 * DIGIT)) & MASK) as usize] += 1;
         }
-        // A pass where every item has the same digit changes nothing.
+    }
+    let mut scratch = alloc::vec![T::default(); items.len()];
+    for (pass, start) in counts.iter_mut().enumerate() {
         if start.iter().any(|&c| c == items.len()) {
-            shift += DIGIT;
             continue;
         }
         let mut total = 0;
         for c in start.iter_mut() {
             (*c, total) = (total, total + *c);
         }
+        let shift = pass as u32 * DIGIT;
         for item in items.iter() {
-            let d = digit(item);
+            let d = ((key(item) >> shift) & MASK) as usize;
             scratch[start[d]] = *item;
             start[d] += 1;
         }
         core::mem::swap(items, &mut scratch);
-        shift += DIGIT;
     }
 }
