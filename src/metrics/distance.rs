@@ -1,5 +1,6 @@
 //! Minimum distances (closest pair) in the unit square and on the torus, by
-//! grid bucketing.
+//! grid bucketing, with a z-order bound and a sorted-cell grid for sets that
+//! crowd the grid.
 
 use alloc::vec;
 use alloc::vec::Vec;
@@ -20,9 +21,24 @@ use crate::Error;
 /// yields an upper bound `δ` on the answer; if `δ` exceeds a cell side, a
 /// second pass widens the neighbourhood to `ceil(δ / side)` cells, which is at
 /// most 3 because `δ` came from neighbouring cells. Coincident points end the
-/// search at once. O(n) expected time and O(n) memory for spread-out sets (no
-/// distance matrix); a dense cluster of k distinct points inside one cell of a
-/// spread-out set costs O(k²).
+/// search at once. O(n) time and memory for spread-out sets (no distance
+/// matrix).
+///
+/// If the cells hold more than `4 n` pairs in all (a diagonal, a dense
+/// cluster, a few lattice blobs), the grid is abandoned before any pair is
+/// compared: a z-order of the points (Morton codes, radix-sorted) gives an
+/// upper bound from the pairs adjacent in it, within a constant factor of the
+/// answer for one of three diagonal shifts (Chan 1998, "Approximate nearest
+/// neighbor queries revisited"), and one pass over the occupied cells of side
+/// that bound, kept as radix-sorted cell keys, compares O(1) pairs per point.
+/// The first shift alone is tried first; the other two are added only if
+/// that pass meets more than `16 n` pairs. Every step is a linear pass or a
+/// radix sort of 64-bit keys (six linear passes), so the worst case is within
+/// O(n log n), in fact linear, for sets whose closest pair is at least 2^-31
+/// of their bounding box apart (below that the z-order cannot see the pair and
+/// the pass may compare more pairs; the result stays exact). Measured at 2^20
+/// points, the diagonal and two dense lattice blobs take 2 to 3 times as long
+/// as uniform points (see `docs/metrics.md`).
 ///
 /// # Errors
 ///
@@ -51,7 +67,10 @@ pub fn min_distance(points: &[Vec2]) -> Result<f64, Error> {
 /// As [`min_distance`]. On an axis where the points span more than 1/2 the
 /// grid covers all of `[0, 1)` and neighbours wrap modulo the grid size; on a
 /// narrower axis no pair is closer across the seam, and the grid covers just
-/// the points' extent. O(n) expected time, O(n) memory.
+/// the points' extent. On crowded sets, the points within the bound of a seam
+/// get ghost copies one period away, and every candidate pair is measured
+/// with the toroidal distance. O(n) time on spread-out sets, O(n log n) worst
+/// case, O(n) memory.
 ///
 /// # Errors
 ///

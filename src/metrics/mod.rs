@@ -8,9 +8,9 @@
 //! | [`l2_star_discrepancy`] | RMS of the local discrepancy (Warnock) | O(n log n) | O(n) |
 //! | [`centered_l2_discrepancy`] | Hickernell's centred L2 | O(n log n) | O(n) |
 //! | [`wraparound_l2_discrepancy`] | Hickernell's wrap-around L2 | O(n log n) | O(n) |
-//! | [`min_distance`] | closest pair | O(n) expected | O(n) |
-//! | [`toroidal_min_distance`] | closest pair on the torus | O(n) expected | O(n) |
-//! | [`normalized_toroidal_min_distance`] | the above over the hexagonal bound | O(n) expected | O(n) |
+//! | [`min_distance`] | closest pair | O(n) spread out, O(n log n) worst case | O(n) |
+//! | [`toroidal_min_distance`] | closest pair on the torus | O(n) spread out, O(n log n) worst case | O(n) |
+//! | [`normalized_toroidal_min_distance`] | the above over the hexagonal bound | as above | O(n) |
 //! | [`is_latin`] | one point per row and column of n x n | O(n) | O(n) |
 //! | [`is_stratified`] | n / (columns rows) points per cell | O(n) | O(columns rows) |
 //! | [`is_net_base2`] | (0, m, 2)-net in base 2 | O(n log n) | O(n) |

@@ -194,9 +194,11 @@ pub fn is_net_base2(points: &[Vec2]) -> Result<bool, Error> {
 /// # Cost
 ///
 /// One counting pass over exact integer cell indices per shape, O(n) time
-/// each; a check of one `t` visits its `m - t + 1` shapes, and the binary
-/// search over `t` checks at most `ceil(log2(m + 1))` values: O(n m log m)
-/// time in all, O(n) memory. Cells are exact (see the module docs).
+/// each; a check of one `t` visits at most its `m - t + 1` shapes (a failing
+/// one usually stops early), and a galloping then binary search over `t`
+/// checks O(log m) values, starting with `t = 0`, so a (0, m, 2)-net costs
+/// one check: O(n m log m) time in all, O(n) memory. Cells are exact (see
+/// the module docs).
 ///
 /// # Limits
 ///
@@ -243,8 +245,24 @@ pub fn net_t_value(points: &[Vec2]) -> Result<u32, Error> {
         .map(|p| (cell_of(p.x, n as u64), cell_of(p.y, n as u64)))
         .collect();
     let mut counts = vec![0u32; n];
+    // Galloping search from t = 0 (the answer for good sets, which then costs
+    // one check), then a binary search. A failing check usually stops early.
     // Invariant: the set is a (hi, m, 2)-net and not a (lo - 1, m, 2)-net.
     let (mut lo, mut hi) = (0, m);
+    let mut step = 1;
+    while lo < hi {
+        if is_net_with_t(&cells, m, lo, &mut counts) {
+            hi = lo;
+            break;
+        }
+        let next = (lo + step).min(hi);
+        if is_net_with_t(&cells, m, next, &mut counts) {
+            (lo, hi) = (lo + 1, next);
+            break;
+        }
+        lo = next + 1;
+        step *= 2;
+    }
     while lo < hi {
         let t = lo + (hi - lo) / 2;
         if is_net_with_t(&cells, m, t, &mut counts) {
