@@ -134,7 +134,7 @@ pub(crate) fn radix_sort<T: Copy + Default>(
     }
     let mut scratch = alloc::vec![T::default(); items.len()];
     for (pass, start) in counts.iter_mut().enumerate() {
-        if start.iter().any(|&c| c == items.len()) {
+        if start.contains(&items.len()) {
             continue;
         }
         let mut total = 0;
