@@ -146,8 +146,11 @@ struct Grid {
 
 impl Grid {
     /// A grid of about `n / 2` cells over the rectangle at `(ox, oy)` with
-    /// sides `(wx, wy)`, with cells as square as the rectangle allows.
-    fn new(points: &[Vec2], [ox, oy, wx, wy]: [f64; 4]) -> Self {
+    /// sides `(wx, wy)`, with cells as square as the rectangle allows, or
+    /// `None` if its cells would hold more than `4 n` pairs, which the passes
+    /// below would compare one by one (uniform points give about `n`; a
+    /// diagonal or a dense cluster up to `n² / 2`).
+    fn new(points: &[Vec2], [ox, oy, wx, wy]: [f64; 4]) -> Option<Self> {
         let n = points.len();
         let cells = (n / 2).clamp(1, 1 << 24);
         let (gx, gy) = if wx > 0.0 && wy > 0.0 {
@@ -179,6 +182,13 @@ impl Grid {
         for &c in &cells {
             start[c as usize + 1] += 1;
         }
+        let pairs: u64 = start
+            .iter()
+            .map(|&c| u64::from(c) * u64::from(c.saturating_sub(1)) / 2)
+            .sum();
+        if pairs > 4 * n as u64 {
+            return None;
+        }
         for c in 0..gx * gy {
             start[c + 1] += start[c];
         }
@@ -190,7 +200,7 @@ impl Grid {
             ys[*slot as usize] = coord(p.y);
             *slot += 1;
         }
-        Self {
+        Some(Self {
             gx,
             gy,
             side_x: wx / gx as f64,
@@ -198,20 +208,7 @@ impl Grid {
             start,
             xs,
             ys,
-        }
-    }
-
-    /// Whether the cells hold more than `4 n` pairs, which the passes below
-    /// would compare one by one (uniform points give about `n`; a diagonal
-    /// or a dense cluster gives up to `n² / 2`).
-    fn crowded(&self) -> bool {
-        let n = self.xs.len() as u64;
-        let mut pairs = 0u64;
-        for w in self.start.windows(2) {
-            let c = u64::from(w[1] - w[0]);
-            pairs += c * c.saturating_sub(1) / 2;
-        }
-        pairs > 4 * n
+        })
     }
 
     fn cell(&self, c: usize) -> core::ops::Range<usize> {
@@ -271,10 +268,9 @@ fn closest_pair_squared(points: &[Vec2], torus: bool) -> f64 {
     let (ox, wx) = if wrap[0] { (0.0, 1.0) } else { (lo_x, wx) };
     let (oy, wy) = if wrap[1] { (0.0, 1.0) } else { (lo_y, wy) };
     let bounds = [ox, oy, wx, wy];
-    let grid = Grid::new(points, bounds);
-    if grid.crowded() {
+    let Some(grid) = Grid::new(points, bounds) else {
         return robust_closest_pair_squared(points, torus);
-    }
+    };
     let (gx, gy) = (grid.gx as isize, grid.gy as isize);
     let mut best = f64::INFINITY;
 
@@ -506,23 +502,32 @@ fn grid_pass(points: &[Vec2], torus: bool, bound: f64, budget: u64) -> Option<f6
         .map(|(e, &(x, y, _))| (cell(y, oy) * gx + cell(x, ox), e as u32))
         .collect();
     radix_sort(&mut cells, |c| c.0, key_bits);
+    // The original coordinates and index of each entry, in cell order, so
+    // that the pass reads memory in order.
+    let sorted: Vec<(f64, f64, u32)> = cells
+        .iter()
+        .map(|&(_, e)| {
+            let i = entries[e as usize].2;
+            let (x, y) = at(i);
+            (x, y, i)
+        })
+        .collect();
+    drop(entries);
 
     let wrap = [torus, torus];
     let mut best = bound;
     let mut compared = 0u64;
-    let original = |e: u32| entries[e as usize].2;
-    let compare = |a: &[(u64, u32)], b: &[(u64, u32)], best: &mut f64, compared: &mut u64| {
-        *compared += (a.len() * b.len()) as u64;
-        for &(_, i) in a {
-            for &(_, j) in b {
-                let (i, j) = (original(i), original(j));
-                if i != j {
-                    let (p, q) = (at(i), at(j));
-                    *best = best.min(dist2(p.0, p.1, q.0, q.1, wrap));
+    let compare =
+        |a: &[(f64, f64, u32)], b: &[(f64, f64, u32)], best: &mut f64, compared: &mut u64| {
+            *compared += (a.len() * b.len()) as u64;
+            for &(ax, ay, i) in a {
+                for &(bx, by, j) in b {
+                    if i != j {
+                        *best = best.min(dist2(ax, ay, bx, by, wrap));
+                    }
                 }
             }
-        }
-    };
+        };
     // Runs of equal keys are cells; `above` walks the cells of the next row.
     let mut runs: Vec<(u64, usize, usize)> = Vec::new();
     let mut start = 0;
@@ -534,14 +539,14 @@ fn grid_pass(points: &[Vec2], torus: bool, bound: f64, budget: u64) -> Option<f6
     }
     let mut above = 0usize;
     for (r, &(key, s, e)) in runs.iter().enumerate() {
-        let own = &cells[s..e];
+        let own = &sorted[s..e];
         for k in 0..own.len() {
             compare(&own[k..k + 1], &own[k + 1..], &mut best, &mut compared);
         }
         // Cell (cx + 1, cy); cx + 1 < gx, so the key stays in its row.
         if let Some(&(next, s2, e2)) = runs.get(r + 1) {
             if next == key + 1 {
-                compare(own, &cells[s2..e2], &mut best, &mut compared);
+                compare(own, &sorted[s2..e2], &mut best, &mut compared);
             }
         }
         // Cells (cx - 1 ..= cx + 1, cy + 1); cx + 1 < gx and cx >= 1 there.
@@ -553,7 +558,7 @@ fn grid_pass(points: &[Vec2], torus: bool, bound: f64, budget: u64) -> Option<f6
         let mut a = above;
         while a < runs.len() && runs[a].0 <= last {
             let (_, s2, e2) = runs[a];
-            compare(own, &cells[s2..e2], &mut best, &mut compared);
+            compare(own, &sorted[s2..e2], &mut best, &mut compared);
             a += 1;
         }
         if compared > budget {
