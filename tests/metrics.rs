@@ -1106,6 +1106,23 @@ fn spectrum_matches_direct_evaluation() {
     }
 }
 
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+
+    #[test]
+    fn spectrum_matches_direct_evaluation_on_any_set(
+        points in unit_points(24),
+        r in 1u32..=6,
+    ) {
+        let got = radial_power_spectrum(&points, r).unwrap();
+        let want = direct_spectrum(&points, i64::from(r));
+        prop_assert_eq!(got.len(), r as usize);
+        for (g, w) in got.iter().zip(&want) {
+            prop_assert!((g - w).abs() <= 1e-10 * w.max(1.0), "{g} vs {w}");
+        }
+    }
+}
+
 #[test]
 fn spectrum_in_bands_matches_one_band() {
     // 2^20 frequencies per band: at r = 600 the half plane takes two bands.
