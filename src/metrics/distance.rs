@@ -365,8 +365,9 @@ fn closest_pair_squared(points: &[Vec2], torus: bool) -> f64 {
 /// cells of side `δ0`, kept as sorted cell keys (so it has no empty cells).
 ///
 /// The bound: Chan 1998 ("Approximate nearest neighbor queries revisited",
-/// Discrete Comput. Geom. 20) shows that for one of three diagonal shifts by
-/// multiples of 1/3 of the (doubled) domain, the closest pair lies in one
+/// Discrete Comput. Geom. 20) shows that for points in a square shifted
+/// along the diagonal by 0, 1/3 and 2/3 of its side, inside a quadtree of
+/// twice its side, for one of the three shifts the closest pair lies in one
 /// quadtree box of side O(δ); the points between them in z-order lie in that
 /// box too, so some pair adjacent in one of the three z-orders is O(δ) apart.
 /// Cells of side `δ0 = O(δ)` then hold O(1) points each (they are δ apart),
@@ -427,10 +428,9 @@ fn robust_closest_pair_squared(points: &[Vec2], torus: bool) -> f64 {
     // usually gives a bound within a small factor (it does for lines,
     // lattices and clusters); if the grid pass then meets more than `16 n`
     // pairs, the other two shifts make the bound a guaranteed one.
-    let mut bound = f64::INFINITY;
-    let mut keys: Vec<(u64, u32)> = Vec::with_capacity(n);
-    let shifts = [0u32, 0x2aaa_aaaa, 0x5555_5555];
-    for (round, shifts) in [&shifts[..1], &shifts[1..]].into_iter().enumerate() {
+    let z_order_bound = |shifts: &[u32]| {
+        let mut bound = f64::INFINITY;
+        let mut keys: Vec<(u64, u32)> = Vec::with_capacity(n);
         for &shift in shifts {
             keys.clear();
             keys.extend(
@@ -443,16 +443,24 @@ fn robust_closest_pair_squared(points: &[Vec2], torus: bool) -> f64 {
             for w in keys.windows(2) {
                 bound = bound.min(dist(w[0].1, w[1].1, plane));
             }
-            if bound == 0.0 {
-                return 0.0;
-            }
         }
-        let budget = if round == 0 { 16 * n as u64 } else { u64::MAX };
-        if let Some(best) = grid_pass(points, torus, bound, budget) {
-            return best;
-        }
+        bound
+    };
+    // Shifts by 0, 1/3 and 2/3 of the quantised square, inside a quadtree
+    // of twice its side (keys of 2 x 32 bits).
+    let first = z_order_bound(&[0]);
+    if first == 0.0 {
+        return 0.0;
     }
-    unreachable!("the last grid pass has no budget")
+    if let Some(best) = grid_pass(points, torus, first, 16 * n as u64) {
+        return best;
+    }
+    let bound = first.min(z_order_bound(&[0x2aaa_aaaa, 0x5555_5555]));
+    if bound == 0.0 {
+        return 0.0;
+    }
+    // No budget: the pass always finishes (its fallback value is never used).
+    grid_pass(points, torus, bound, u64::MAX).unwrap_or(bound)
 }
 
 /// The closest pair given an upper bound `bound` on its squared distance,
@@ -642,6 +650,21 @@ mod tests {
                     "case {case}, torus {torus}"
                 );
             }
+        }
+    }
+
+    #[test]
+    fn grid_pass_stops_at_its_budget() {
+        let points: Vec<Vec2> = (0..100u32)
+            .map(|i| Vec2::new((i * 37 % 100) as f32 / 100.0, (i * 61 % 97) as f32 / 97.0))
+            .collect();
+        for torus in [false, true] {
+            // A loose bound: cells as large as the square, all pairs in one.
+            assert_eq!(grid_pass(&points, torus, 2.0, 100), None);
+            assert_eq!(
+                grid_pass(&points, torus, 2.0, u64::MAX),
+                Some(brute(&points, torus))
+            );
         }
     }
 
