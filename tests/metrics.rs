@@ -1247,6 +1247,21 @@ fn wraparound_families(n: usize) -> Vec<(&'static str, Vec<Vec2>)> {
 }
 
 #[test]
+fn wraparound_of_a_lattice_matches_exact_arithmetic() {
+    // The rank-1 lattice of `wraparound_families(4096)`: coordinates are
+    // multiples of 2^-12, so n² WD² + 16/9 n² is an integer over 2^50, summed
+    // exactly with Python integers (Fraction) to WD = 2.551246374788195e-4.
+    let (name, lattice) = wraparound_families(4096).swap_remove(1);
+    assert_eq!(name, "lattice");
+    assert_close(
+        "lattice",
+        wraparound_l2_discrepancy(&lattice).unwrap(),
+        2.551246374788195e-4,
+        4e-16,
+    );
+}
+
+#[test]
 fn wraparound_matches_the_direct_sum_on_hard_families() {
     // The direct sum takes about 1.5 s at 2^14: the five families the
     // cancellation is hardest on run there, all of them below.
