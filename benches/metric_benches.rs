@@ -1,12 +1,21 @@
 //! Metric speed at n = 2^10 to 2^20: `cargo bench --bench speed -- metric`.
 //!
 //! Distances and discrepancies run on uniform random points from a fixed-seed
-//! `Pcg32`; the stratification checks run on a Hammersley set, which passes
-//! them all, so they never stop early. The quadratic wrap-around L2
-//! discrepancy stops at 2^16. Large sizes take 10 single-iteration samples.
+//! `Pcg32`; the stratification checks and the t-value run on a Hammersley
+//! set, which passes them all, so they never stop early. Large sizes take 10
+//! single-iteration samples.
+//!
+//! `metric/min_distance_crowded` runs the minimum distances on the sets that
+//! crowd a bounding-box grid (the diagonal at 2^20 and 2^22, two lattice blobs
+//! of 724² points with spacing 2^-17) next to uniform points of the same
+//! size. `metric/wraparound_vs_scipy` prints the ratio of
+//! `scipy.stats.qmc.discrepancy(method="WD", workers=1)`'s time to ours at
+//! 2^14 points when `python3` can import scipy, and says it skipped otherwise.
 
 use std::hint::black_box;
-use std::time::Duration;
+use std::process::Command;
+use std::sync::Once;
+use std::time::{Duration, Instant};
 
 use criterion::{BenchmarkId, Criterion, SamplingMode, Throughput, criterion_group};
 use rand::{Rng, SeedableRng};
@@ -59,7 +68,7 @@ fn metrics(c: &mut Criterion) {
         (
             "wraparound_l2_discrepancy",
             |p| metrics::wraparound_l2_discrepancy(p).unwrap(),
-            16,
+            20,
         ),
         ("min_distance", |p| metrics::min_distance(p).unwrap(), 20),
         (
@@ -93,12 +102,13 @@ fn metrics(c: &mut Criterion) {
     }
 
     let nets: Vec<(u32, Vec<Vec2>)> = SIZES.iter().map(|&k| (k, hammersley(k))).collect();
-    let checks: [(&str, Check); 3] = [
+    let checks: [(&str, Check); 4] = [
         ("is_latin", |p, _| metrics::is_latin(p).unwrap()),
         ("is_stratified", |p, k| {
             metrics::is_stratified(p, 1 << (k / 2), 1 << (k - k / 2)).unwrap()
         }),
         ("is_net_base2", |p, _| metrics::is_net_base2(p).unwrap()),
+        ("net_t_value", |p, _| metrics::net_t_value(p).unwrap() == 0),
     ];
     for (name, check) in checks {
         let mut group = c.benchmark_group(format!("metric/{name}"));
@@ -116,4 +126,152 @@ fn metrics(c: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, metrics);
+/// The sets of the issue's adversarial families, by name, with a uniform set
+/// of the same size for each.
+fn crowded_sets() -> Vec<(String, Vec<Vec2>)> {
+    let mut sets = Vec::new();
+    for k in [20u32, 22] {
+        let n = 1usize << k;
+        sets.push((format!("uniform/2^{k}"), random_points(n)));
+        let diagonal = (0..n).map(|i| Vec2::splat(i as f32 / n as f32)).collect();
+        sets.push((format!("diagonal/2^{k}"), diagonal));
+    }
+    let side = 724;
+    let spacing = 1.0 / (1u32 << 17) as f32;
+    let mut blobs = Vec::with_capacity(2 * side * side);
+    for origin in [0.25f32, 0.75] {
+        for i in 0..side * side {
+            blobs.push(Vec2::new(
+                origin + (i % side) as f32 * spacing,
+                origin + (i / side) as f32 * spacing,
+            ));
+        }
+    }
+    sets.push(("uniform/2x724^2".to_string(), random_points(blobs.len())));
+    sets.push(("blobs/2x724^2".to_string(), blobs));
+    sets
+}
+
+fn crowded(c: &mut Criterion) {
+    let sets = crowded_sets();
+    let mut group = c.benchmark_group("metric/min_distance_crowded");
+    group
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_secs(2))
+        .sampling_mode(SamplingMode::Flat);
+    for (name, points) in &sets {
+        group.throughput(Throughput::Elements(points.len() as u64));
+        group.bench_with_input(BenchmarkId::new("min_distance", name), points, |b, p| {
+            b.iter(|| metrics::min_distance(black_box(p)).unwrap())
+        });
+        group.bench_with_input(BenchmarkId::new("toroidal", name), points, |b, p| {
+            b.iter(|| metrics::toroidal_min_distance(black_box(p)).unwrap())
+        });
+    }
+    group.finish();
+}
+
+fn spectrum(c: &mut Criterion) {
+    let mut group = c.benchmark_group("metric/radial_power_spectrum");
+    group
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_secs(1));
+    let points = random_points(1024);
+    for max_frequency in [16u32, 64] {
+        group.bench_with_input(
+            BenchmarkId::new("n=1024", max_frequency),
+            &max_frequency,
+            |b, &f| b.iter(|| metrics::radial_power_spectrum(black_box(&points), f).unwrap()),
+        );
+    }
+    group.finish();
+}
+
+/// Times scipy's wrap-around discrepancy (best of 5, one worker) on the same
+/// points, or `None` with the reason when python3 or scipy is missing.
+fn scipy_wd_seconds(points: &[Vec2]) -> Result<(f64, f64), String> {
+    let probe = Command::new("python3")
+        .args(["-c", "import scipy"])
+        .output();
+    match probe {
+        Ok(out) if out.status.success() => {}
+        _ => return Err("python3 with scipy not found (pip install scipy)".to_string()),
+    }
+    let path = std::env::temp_dir().join(format!("wellspread-wd-{}.csv", std::process::id()));
+    // f64 text of the f32 values reads back exactly.
+    let text: String = points
+        .iter()
+        .map(|p| format!("{:?},{:?}\n", f64::from(p.x), f64::from(p.y)))
+        .collect();
+    std::fs::write(&path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    let script = r#"
+import sys, time, numpy as np
+from scipy.stats import qmc
+p = np.loadtxt(sys.argv[1], delimiter=',')
+best = float('inf')
+for _ in range(5):
+    t = time.perf_counter()
+    v = qmc.discrepancy(p, method='WD', workers=1)
+    best = min(best, time.perf_counter() - t)
+print(best, repr(float(v)))
+"#;
+    let out = Command::new("python3")
+        .args(["-c", script])
+        .arg(&path)
+        .output();
+    let _ = std::fs::remove_file(&path);
+    let out = out.map_err(|e| format!("cannot run python3: {e}"))?;
+    if !out.status.success() {
+        return Err(format!(
+            "scipy failed: {}",
+            String::from_utf8_lossy(&out.stderr).trim()
+        ));
+    }
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let mut fields = stdout.split_whitespace().map(str::parse::<f64>);
+    match (fields.next(), fields.next()) {
+        (Some(Ok(seconds)), Some(Ok(value))) => Ok((seconds, value)),
+        _ => Err(format!("unexpected scipy output `{}`", stdout.trim())),
+    }
+}
+
+fn versus_scipy(c: &mut Criterion) {
+    let points = random_points(1 << 14);
+    let mut group = c.benchmark_group("metric/wraparound_vs_scipy");
+    group
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_secs(1));
+    let report = Once::new();
+    group.bench_function("wellspread/16384", |b| {
+        report.call_once(|| {
+            let ours = (0..5)
+                .map(|_| {
+                    let start = Instant::now();
+                    black_box(metrics::wraparound_l2_discrepancy(black_box(&points)).unwrap());
+                    start.elapsed().as_secs_f64()
+                })
+                .fold(f64::INFINITY, f64::min);
+            let wd = metrics::wraparound_l2_discrepancy(&points).unwrap();
+            match scipy_wd_seconds(&points) {
+                // scipy returns WD squared.
+                Ok((theirs, wd2)) => println!(
+                    "wraparound L2 at 2^14, best of 5: wellspread {:.2} ms, scipy {:.1} ms, \
+                     ratio {:.1}; values {wd:e} and sqrt {:e} (rel. diff {:.1e})",
+                    ours * 1e3,
+                    theirs * 1e3,
+                    theirs / ours,
+                    wd2.sqrt(),
+                    (wd - wd2.sqrt()).abs() / wd
+                ),
+                Err(why) => println!("wraparound L2 versus scipy: skipped, {why}"),
+            }
+        });
+        b.iter(|| metrics::wraparound_l2_discrepancy(black_box(&points)).unwrap())
+    });
+    group.finish();
+}
+
+criterion_group!(benches, metrics, crowded, spectrum, versus_scipy);

@@ -37,7 +37,7 @@ struct Config {
     metric_patterns: u32,
     /// The n, frequency radius and pattern count of the power spectra.
     spectrum_n: u32,
-    spectrum_radius: i32,
+    spectrum_radius: u32,
     spectrum_patterns: u32,
     /// The n of the point plots.
     points_n: u32,
@@ -218,65 +218,18 @@ fn metric_means(config: &Config) -> Vec<Vec<Vec<Option<f64>>>> {
     values
 }
 
-/// Radially averaged periodogram `|sum_j exp(-2 pi i k . x_j)|^2 / n` over
-/// integer frequencies `0 < |k| <= radius`, binned by `round(|k|)` and
-/// averaged over patterns. Uniform random points give 1 at every frequency.
+/// `metrics::radial_power_spectrum` up to `spectrum_radius`, averaged over
+/// patterns: entry `r - 1` is the mean periodogram over the integer
+/// frequencies whose rounded length is `r`. Uniform random points give 1.
 fn radial_spectrum(sampler: &AnySampler, config: &Config) -> Vec<f64> {
-    let r = config.spectrum_radius;
-    let width = (2 * r + 1) as usize;
-    let rows = (r + 1) as usize;
-    let bins = r as usize + 1;
-    let mut power = vec![0.0f64; bins];
-    let mut counts = vec![0u32; bins];
-    // Periodograms of real data are symmetric, P(-k) = P(k): the half plane
-    // ky >= 0 holds every value.
-    let mut re = vec![0.0f64; width * rows];
-    let mut im = vec![0.0f64; width * rows];
-    let mut cx = vec![(0.0f64, 0.0f64); width];
-    let mut cy = vec![(0.0f64, 0.0f64); rows];
     let n = sampler.len();
+    let mut power = vec![0.0f64; config.spectrum_radius as usize];
     for p in 0..config.spectrum_patterns {
-        re.fill(0.0);
-        im.fill(0.0);
-        for point in points(sampler, pattern(p, n)) {
-            for (i, c) in cx.iter_mut().enumerate() {
-                let k = i as f64 - f64::from(r);
-                let (s, co) = (-2.0 * PI * k * f64::from(point.x)).sin_cos();
-                *c = (co, s);
-            }
-            for (i, c) in cy.iter_mut().enumerate() {
-                let (s, co) = (-2.0 * PI * i as f64 * f64::from(point.y)).sin_cos();
-                *c = (co, s);
-            }
-            for (ky, &(yr, yi)) in cy.iter().enumerate() {
-                let row = ky * width;
-                for (kx, &(xr, xi)) in cx.iter().enumerate() {
-                    re[row + kx] += xr * yr - xi * yi;
-                    im[row + kx] += xr * yi + xi * yr;
-                }
-            }
-        }
-        for ky in 0..rows {
-            for kx in 0..width {
-                let (fx, fy) = (kx as f64 - f64::from(r), ky as f64);
-                // Skip k = 0 (the DC term is n) and the mirrored half of ky = 0.
-                if fy == 0.0 && fx <= 0.0 {
-                    continue;
-                }
-                let radius = (fx * fx + fy * fy).sqrt();
-                let bin = radius.round() as usize;
-                if bin == 0 || bin >= bins {
-                    continue;
-                }
-                let i = ky * width + kx;
-                power[bin] += (re[i] * re[i] + im[i] * im[i]) / f64::from(n);
-                counts[bin] += 1;
-            }
-        }
-    }
-    for (p, &c) in power.iter_mut().zip(&counts) {
-        if c > 0 {
-            *p /= f64::from(c);
+        let spectrum =
+            metrics::radial_power_spectrum(&points(sampler, pattern(p, n)), config.spectrum_radius)
+                .expect("sampler points are in [0, 1)");
+        for (sum, v) in power.iter_mut().zip(spectrum) {
+            *sum += v / f64::from(config.spectrum_patterns);
         }
     }
     power
@@ -499,8 +452,7 @@ fn spectrum_svg(config: &Config, spectra: &[(&str, Vec<f64>)]) -> String {
             .1
             .iter()
             .enumerate()
-            .skip(1)
-            .map(|(k, &v)| format!("{:.1},{:.1}", k as f64 / r * size, py(v)))
+            .map(|(i, &v)| format!("{:.1},{:.1}", (i + 1) as f64 / r * size, py(v)))
             .collect();
         let _ = writeln!(
             s,

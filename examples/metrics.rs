@@ -9,7 +9,8 @@
 //! Input: CSV with one `x,y` point per line, an optional header line, blank
 //! lines ignored; a file argument, or stdin when there is none or it is `-`.
 //! Output: `n`, the four discrepancies, the three minimum distances,
-//! `is_latin`, `is_net_base2` (null unless n is a power of two) and, with
+//! `is_latin`, `is_net_base2` and `t_value` (the smallest t of a (t, m, 2)-net;
+//! both null unless n is a power of two) and, with
 //! `--stratified MxK`, `is_stratified`. Exit code 2 on a malformed line (with
 //! its line number) or a metric error.
 
@@ -144,6 +145,14 @@ fn report(points: &[Vec2], grid: Option<(u32, u32)>) -> Result<String, wellsprea
             "is_net_base2",
             if points.len().is_power_of_two() {
                 metrics::is_net_base2(points)?.to_string()
+            } else {
+                "null".to_string()
+            },
+        ),
+        (
+            "t_value",
+            if points.len().is_power_of_two() {
+                metrics::net_t_value(points)?.to_string()
             } else {
                 "null".to_string()
             },

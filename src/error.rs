@@ -87,6 +87,14 @@ pub enum Error {
         /// Number of points.
         n: usize,
     },
+    /// A power spectrum was asked for a largest frequency of 0 or above the
+    /// largest one it accepts.
+    FrequencyOutOfRange {
+        /// The largest frequency asked for.
+        max_frequency: u32,
+        /// The largest value accepted.
+        max: u32,
+    },
 }
 
 impl fmt::Display for Error {
@@ -148,6 +156,11 @@ impl fmt::Display for Error {
                 f,
                 "a (0,m,2)-net check needs n = 2^m points, got n = {n}; \
                  measure a power-of-two prefix"
+            ),
+            Error::FrequencyOutOfRange { max_frequency, max } => write!(
+                f,
+                "a power spectrum needs a largest frequency from 1 to {max}, \
+                 got {max_frequency}"
             ),
         }
     }

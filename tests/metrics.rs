@@ -4,10 +4,12 @@
 use proptest::prelude::*;
 use wellspread::glam::Vec2;
 use wellspread::metrics::{
-    Error, centered_l2_discrepancy, is_latin, is_net_base2, is_stratified, l2_star_discrepancy,
-    min_distance, normalized_toroidal_min_distance, star_discrepancy, toroidal_min_distance,
-    wraparound_l2_discrepancy,
+    Error, MAX_SPECTRUM_FREQUENCY, centered_l2_discrepancy, is_latin, is_net_base2, is_stratified,
+    l2_star_discrepancy, min_distance, net_t_value, normalized_toroidal_min_distance,
+    radial_power_spectrum, star_discrepancy, toroidal_min_distance, wraparound_l2_discrepancy,
+    wraparound_l2_discrepancy_quadratic,
 };
+use wellspread::{Pmj02, Sampler2D, Sobol};
 
 // ---------------------------------------------------------------- helpers
 
@@ -583,7 +585,7 @@ fn wraparound_does_not_depend_on_the_thread_count() {
             .num_threads(threads)
             .build()
             .unwrap()
-            .install(|| wraparound_l2_discrepancy(&points).unwrap())
+            .install(|| wraparound_l2_discrepancy_quadratic(&points).unwrap())
     };
     let one = run(1);
     assert_eq!(one.to_bits(), run(2).to_bits());
@@ -860,6 +862,10 @@ proptest! {
             (!points.len().is_power_of_two()).then_some(Error::NotPowerOfTwo { n: points.len() })
         });
         check("net", b(is_net_base2(&points)), net_want)?;
+        check("t", net_t_value(&points).map(|t| assert!(1usize << t <= points.len())), net_want)?;
+        let spectrum = radial_power_spectrum(&points, 3)
+            .map(|s| assert!(s.len() == 3 && s.iter().all(|p| p.is_finite() && *p >= 0.0)));
+        check("spectrum", spectrum, want)?;
         let strat_want = if columns == 0 || rows == 0 {
             Some(Error::ZeroGridSide { columns, rows })
         } else {
@@ -904,4 +910,475 @@ fn error_messages_name_the_point() {
     );
     assert_eq!(min_distance(&neg).unwrap(), min_distance(&pos).unwrap());
     assert!(is_latin(&neg).unwrap());
+}
+
+// ------------------------------------------------------------ net t-value
+
+/// The smallest t for which every elementary interval of area 2^(t-m) holds
+/// 2^t points, by counting each interval over all points with f64
+/// comparisons (scaling by a power of two is exact).
+fn brute_t_value(points: &[Vec2]) -> u32 {
+    let n = points.len();
+    let m = n.trailing_zeros();
+    'next_t: for t in 0..=m {
+        for a in 0..=m - t {
+            let b = m - t - a;
+            for i in 0..1u64 << a {
+                for j in 0..1u64 << b {
+                    let inside = points
+                        .iter()
+                        .filter(|p| {
+                            let (x, y) = (
+                                f64::from(p.x) * (1u64 << a) as f64,
+                                f64::from(p.y) * (1u64 << b) as f64,
+                            );
+                            x.floor() as u64 == i && y.floor() as u64 == j
+                        })
+                        .count();
+                    if inside != 1 << t {
+                        continue 'next_t;
+                    }
+                }
+            }
+        }
+        return t;
+    }
+    unreachable!("every set of 2^m points is an (m, m, 2)-net")
+}
+
+#[test]
+fn t_value_of_sobol_and_pmj02_prefixes_is_zero() {
+    let n = 1u32 << 14;
+    let mut points = vec![Vec2::ZERO; n as usize];
+    for pattern in [0u32, 1, 77, 0xdead_beef] {
+        Sobol::new(n).unwrap().fill(pattern, &mut points);
+        for m in 0..=14 {
+            assert_eq!(
+                net_t_value(&points[..1 << m]).unwrap(),
+                0,
+                "sobol {pattern} 2^{m}"
+            );
+        }
+        Pmj02::new(n).unwrap().fill(pattern, &mut points);
+        for m in 0..=14 {
+            assert_eq!(
+                net_t_value(&points[..1 << m]).unwrap(),
+                0,
+                "pmj02 {pattern} 2^{m}"
+            );
+        }
+    }
+}
+
+#[test]
+fn t_value_of_constructed_sets() {
+    // A 2^a x 2^b grid of cell corners: intervals of shape (c, d) hold equal
+    // counts exactly when c <= a and d <= b, so t = m - min(a, b) = max(a, b).
+    for (a, b) in [(0, 0), (1, 0), (0, 3), (2, 2), (3, 5), (6, 6), (1, 9)] {
+        let grid: Vec<Vec2> = (0..1u32 << (a + b))
+            .map(|i| {
+                Vec2::new(
+                    (i % (1 << a)) as f32 / (1u32 << a) as f32,
+                    (i >> a) as f32 / (1u32 << b) as f32,
+                )
+            })
+            .collect();
+        assert_eq!(net_t_value(&grid).unwrap(), a.max(b), "{a} x {b} grid");
+    }
+    // Two copies of a (0, m - 1, 2)-net are a (1, m, 2)-net and no better.
+    for m in 1..=12 {
+        let half = hammersley(m - 1);
+        let twice: Vec<Vec2> = half.iter().chain(&half).copied().collect();
+        assert_eq!(net_t_value(&twice).unwrap(), 1, "m = {m}");
+        assert_eq!(net_t_value(&hammersley(m)).unwrap(), 0);
+    }
+    // n identical points: only the unit square holds them all.
+    for m in 0..=10 {
+        let same = vec![Vec2::new(0.3, 0.6); 1 << m];
+        assert_eq!(net_t_value(&same).unwrap(), m);
+    }
+    // Moving one point of a Hammersley set out of its column breaks t = 0;
+    // the brute force says by how much.
+    let mut moved = hammersley(6);
+    moved[5].x = 0.999;
+    assert_eq!(net_t_value(&moved).unwrap(), brute_t_value(&moved));
+    assert!(net_t_value(&moved).unwrap() > 0);
+}
+
+#[test]
+fn t_value_needs_a_power_of_two() {
+    for n in [3usize, 6, 100, 1000] {
+        assert_eq!(
+            net_t_value(&random_points(n, 3)),
+            Err(Error::NotPowerOfTwo { n })
+        );
+    }
+    assert_eq!(net_t_value(&[]), Err(Error::EmptyPointSet));
+}
+
+/// Points on the 2^-bits grid, so small sets are often nets of some small t.
+fn dyadic_set(log2_n: u32, bits: u32) -> impl Strategy<Value = Vec<Vec2>> {
+    let coord = (0u32..1 << bits).prop_map(move |i| i as f32 / (1u32 << bits) as f32);
+    prop::collection::vec((coord.clone(), coord), 1 << log2_n)
+        .prop_map(|v| v.into_iter().map(|(x, y)| Vec2::new(x, y)).collect())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    #[test]
+    fn t_value_matches_brute_force(
+        points in (0u32..=6, 1u32..=7).prop_flat_map(|(m, bits)| dyadic_set(m, bits)),
+    ) {
+        prop_assert_eq!(net_t_value(&points).unwrap(), brute_t_value(&points));
+    }
+
+    #[test]
+    fn t_value_of_scrambled_nets_matches_brute_force(pattern in any::<u32>(), m in 0u32..=7) {
+        let mut points = vec![Vec2::ZERO; 1 << m];
+        Sobol::new(1 << m).unwrap().fill(pattern, &mut points);
+        // Swap the x of two points: usually no longer a (0, m, 2)-net.
+        let last = points.len() - 1;
+        let x0 = points[0].x;
+        points[0].x = points[last].x;
+        points[last].x = x0;
+        points[0].y = points[last / 2].y;
+        prop_assert_eq!(net_t_value(&points).unwrap(), brute_t_value(&points));
+    }
+}
+
+// ---------------------------------------------------------- power spectrum
+
+/// The spectrum straight from its definition: every k of the full plane with
+/// 0 < |k| <= r, its own exponential sum, binned by the rounded length.
+fn direct_spectrum(points: &[Vec2], r: i64) -> Vec<f64> {
+    let n = points.len() as f64;
+    let mut power = vec![0.0; r as usize];
+    let mut count = vec![0u32; r as usize];
+    for kx in -r..=r {
+        for ky in -r..=r {
+            let len = ((kx * kx + ky * ky) as f64).sqrt();
+            if kx * kx + ky * ky == 0 || len > r as f64 {
+                continue;
+            }
+            let (mut re, mut im) = (0.0f64, 0.0f64);
+            for p in points {
+                let phase = -2.0
+                    * std::f64::consts::PI
+                    * (kx as f64 * f64::from(p.x) + ky as f64 * f64::from(p.y));
+                re += phase.cos();
+                im += phase.sin();
+            }
+            let bin = len.round() as usize - 1;
+            power[bin] += (re * re + im * im) / n;
+            count[bin] += 1;
+        }
+    }
+    power
+        .iter()
+        .zip(&count)
+        .map(|(p, &c)| p / f64::from(c))
+        .collect()
+}
+
+#[test]
+fn spectrum_matches_direct_evaluation() {
+    let sets = [
+        random_points(1, 40),
+        random_points(57, 41),
+        random_points(300, 42),
+        hammersley(7),
+        vec![Vec2::new(0.25, 0.75); 9],
+    ];
+    for (s, points) in sets.iter().enumerate() {
+        for r in [1u32, 2, 7, 20] {
+            let got = radial_power_spectrum(points, r).unwrap();
+            let want = direct_spectrum(points, i64::from(r));
+            assert_eq!(got.len(), r as usize);
+            for (bin, (&g, &w)) in got.iter().zip(&want).enumerate() {
+                // Sums of n unit phasors: absolute error near n 1e-16 per term.
+                assert!(
+                    (g - w).abs() <= 1e-10 * w.max(1.0),
+                    "set {s}, r = {r}, bin {bin}: {g} vs {w}"
+                );
+            }
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+
+    #[test]
+    fn spectrum_matches_direct_evaluation_on_any_set(
+        points in unit_points(24),
+        r in 1u32..=6,
+    ) {
+        let got = radial_power_spectrum(&points, r).unwrap();
+        let want = direct_spectrum(&points, i64::from(r));
+        prop_assert_eq!(got.len(), r as usize);
+        for (g, w) in got.iter().zip(&want) {
+            prop_assert!((g - w).abs() <= 1e-10 * w.max(1.0), "{g} vs {w}");
+        }
+    }
+}
+
+#[test]
+fn spectrum_in_bands_matches_one_band() {
+    // 2^20 frequencies per band: at r = 600 the half plane takes two bands.
+    let points = random_points(5, 43);
+    let big = radial_power_spectrum(&points, 600).unwrap();
+    let small = radial_power_spectrum(&points, 300).unwrap();
+    assert_eq!(big.len(), 600);
+    for (bin, (&a, &b)) in big.iter().zip(&small).take(299).enumerate() {
+        assert!((a - b).abs() <= 1e-9 * b.max(1.0), "bin {bin}: {a} vs {b}");
+    }
+    let want = direct_spectrum(&points, 600);
+    for bin in [0, 299, 300, 450, 599] {
+        assert!(
+            (big[bin] - want[bin]).abs() <= 1e-9 * want[bin].max(1.0),
+            "bin {bin}"
+        );
+    }
+}
+
+#[test]
+fn spectrum_of_random_points_is_flat() {
+    // P(k) of independent uniform points is close to exponential with mean 1,
+    // and P(-k) = P(k): bin r has about pi r independent values per set, so
+    // over 64 sets its mean has standard deviation about 1 / sqrt(64 pi r).
+    // Five of them: false-failure rate about 2e-5 over the 29 bins checked.
+    let r = 32;
+    let mut mean = vec![0.0; r as usize];
+    for seed in 0..64 {
+        let s = radial_power_spectrum(&random_points(256, 1000 + seed), r).unwrap();
+        for (m, v) in mean.iter_mut().zip(s) {
+            *m += v / 64.0;
+        }
+    }
+    for (bin, &m) in mean.iter().enumerate().skip(3) {
+        let sigma = 1.0 / (64.0 * std::f64::consts::PI * (bin + 1) as f64).sqrt();
+        assert!((m - 1.0).abs() < 5.0 * sigma, "bin {}: {m}", bin + 1);
+    }
+}
+
+#[test]
+fn spectrum_rejects_bad_frequencies() {
+    let points = random_points(10, 44);
+    for f in [0, MAX_SPECTRUM_FREQUENCY + 1, u32::MAX] {
+        assert_eq!(
+            radial_power_spectrum(&points, f),
+            Err(Error::FrequencyOutOfRange {
+                max_frequency: f,
+                max: MAX_SPECTRUM_FREQUENCY
+            })
+        );
+    }
+    assert_eq!(radial_power_spectrum(&[], 4), Err(Error::EmptyPointSet));
+    let msg = radial_power_spectrum(&points, 0).unwrap_err().to_string();
+    assert!(
+        msg.contains("from 1 to 65536") && msg.contains("got 0"),
+        "{msg}"
+    );
+}
+
+// --------------------------------------------- wrap-around, fast vs direct
+
+/// The families the O(n log n) wrap-around code must agree on with the
+/// direct double sum: random, lattices, duplicates, ties, clusters, nets.
+fn wraparound_families(n: usize) -> Vec<(&'static str, Vec<Vec2>)> {
+    let nf = n as f32;
+    let mut rng = Mix(n as u64);
+    // Rank-1 lattice with a golden-ratio generator.
+    let g = ((n as f64) * 0.618_033_988_749_895).round() as usize | 1;
+    let lattice: Vec<Vec2> = (0..n)
+        .map(|i| Vec2::new(i as f32 / nf, ((i * g) % n) as f32 / nf))
+        .collect();
+    let side = (n as f64).sqrt().ceil() as usize;
+    let grid: Vec<Vec2> = (0..n)
+        .map(|i| {
+            Vec2::new(
+                (i % side) as f32 / side as f32,
+                (i / side) as f32 / side as f32,
+            )
+        })
+        .collect();
+    let few: Vec<Vec2> = (0..n)
+        .map(|_| Vec2::new((rng.next() % 5) as f32 / 5.0, (rng.next() % 3) as f32 / 3.0))
+        .collect();
+    let mut duplicated = random_points(n.div_ceil(4), 77);
+    duplicated = duplicated.iter().cycle().take(n).copied().collect();
+    let cluster: Vec<Vec2> = (0..n)
+        .map(|_| Vec2::new(0.7 + rng.unit() * 1e-4, 0.2 + rng.unit() * 1e-4))
+        .collect();
+    let tiny: Vec<Vec2> = (0..n)
+        .map(|_| {
+            Vec2::new(
+                rng.unit() * 1e-30,
+                f32::from_bits((rng.next() % 0x3f80_0000) as u32),
+            )
+        })
+        .collect();
+    let two_blobs: Vec<Vec2> = (0..n)
+        .map(|i| {
+            let o = if i % 2 == 0 { 0.1 } else { 0.85 };
+            Vec2::new(o + rng.unit() * 0.01, o + rng.unit() * 0.01)
+        })
+        .collect();
+    let mut sobol = vec![Vec2::ZERO; n];
+    Sobol::new(n as u32).unwrap().fill(9, &mut sobol);
+    let mut pmj = vec![Vec2::ZERO; n];
+    Pmj02::new(n as u32).unwrap().fill(9, &mut pmj);
+    let diagonal: Vec<Vec2> = (0..n).map(|i| Vec2::splat(i as f32 / nf)).collect();
+    vec![
+        ("random", random_points(n, 12)),
+        ("lattice", lattice),
+        ("grid", grid),
+        ("few values", few),
+        ("duplicated", duplicated),
+        ("one point repeated", vec![Vec2::new(0.3, 0.8); n]),
+        ("cluster", cluster),
+        ("tiny and any f32", tiny),
+        ("two blobs", two_blobs),
+        ("sobol", sobol),
+        ("pmj02", pmj),
+        ("diagonal", diagonal),
+    ]
+}
+
+#[test]
+fn wraparound_of_a_lattice_matches_exact_arithmetic() {
+    // The rank-1 lattice of `wraparound_families(4096)`: coordinates are
+    // multiples of 2^-12, so n² WD² + 16/9 n² is an integer over 2^50, summed
+    // exactly with Python integers (Fraction) to WD = 2.551246374788195e-4.
+    let (name, lattice) = wraparound_families(4096).swap_remove(1);
+    assert_eq!(name, "lattice");
+    assert_close(
+        "lattice",
+        wraparound_l2_discrepancy(&lattice).unwrap(),
+        2.551246374788195e-4,
+        4e-16,
+    );
+}
+
+#[test]
+fn wraparound_matches_the_direct_sum_on_hard_families() {
+    // The direct sum takes about 1.5 s at 2^14: the five families the
+    // cancellation is hardest on run there, all of them below.
+    let hardest = ["random", "lattice", "few values", "duplicated", "cluster"];
+    for n in [1usize, 2, 3, 16, 100, 1000, 4096, 1 << 14] {
+        for (name, points) in wraparound_families(n) {
+            if n > 4096 && !hardest.contains(&name) {
+                continue;
+            }
+            let fast = wraparound_l2_discrepancy(&points).unwrap();
+            let direct = wraparound_l2_discrepancy_quadratic(&points).unwrap();
+            assert_close(&format!("{name}, n = {n}"), fast, direct, 1e-12);
+        }
+    }
+}
+
+// ------------------------------------------- min distance, crowded sets
+
+/// Sets that put many points in few cells of a bounding-box grid: the
+/// diagonal, dense lattice blobs (also across the seams), a line of random
+/// points, a cluster inside a spread-out set.
+fn crowded_families() -> Vec<(&'static str, Vec<Vec2>)> {
+    let mut rng = Mix(61);
+    let n = 3000;
+    let diagonal: Vec<Vec2> = (0..n).map(|i| Vec2::splat(i as f32 / n as f32)).collect();
+    let anti: Vec<Vec2> = (0..n)
+        .map(|i| Vec2::new(i as f32 / n as f32, 1.0 - (i + 1) as f32 / n as f32))
+        .collect();
+    let spacing = 1.0 / (1u32 << 17) as f32;
+    let blob = |ox: f32, oy: f32, side: usize| -> Vec<Vec2> {
+        (0..side * side)
+            .map(|i| {
+                let x = ox + (i % side) as f32 * spacing;
+                let y = oy + (i / side) as f32 * spacing;
+                Vec2::new(x % 1.0, y % 1.0)
+            })
+            .collect()
+    };
+    let mut blobs = blob(0.25, 0.25, 40);
+    blobs.extend(blob(0.75, 0.75, 40));
+    // Across the corner of the torus: the blob wraps around both seams.
+    let mut corner = blob(1.0 - 20.5 * spacing, 1.0 - 20.5 * spacing, 40);
+    corner.extend(blob(0.5, 0.5, 30));
+    let line: Vec<Vec2> = (0..n)
+        .map(|_| {
+            let t = rng.unit();
+            Vec2::new(t, (0.3 + 0.4 * t).min(0.999))
+        })
+        .collect();
+    let mut cluster = random_points(2000, 62);
+    cluster.extend((0..2000).map(|_| Vec2::new(0.5 + rng.unit() * 1e-5, 0.5 + rng.unit() * 1e-5)));
+    // Two far clusters hugging opposite seams: close only on the torus.
+    let seams: Vec<Vec2> = (0..n)
+        .map(|i| {
+            let t = rng.unit() * 1e-3;
+            if i % 2 == 0 {
+                Vec2::new(t, 0.5 + t)
+            } else {
+                Vec2::new(1.0 - spacing - t, 0.5 + t * 0.5)
+            }
+        })
+        .collect();
+    vec![
+        ("diagonal", diagonal),
+        ("anti-diagonal", anti),
+        ("two blobs", blobs),
+        ("corner blob", corner),
+        ("line", line),
+        ("cluster", cluster),
+        ("seams", seams),
+    ]
+}
+
+#[test]
+fn min_distances_match_brute_force_on_crowded_sets() {
+    for (name, points) in crowded_families() {
+        assert_eq!(
+            min_distance(&points).unwrap(),
+            brute_min_distance(&points, false),
+            "{name}"
+        );
+        assert_eq!(
+            toroidal_min_distance(&points).unwrap(),
+            brute_min_distance(&points, true),
+            "{name}, torus"
+        );
+    }
+}
+
+/// Sets of up to 300 points crowded onto a line, a few cells or a corner.
+fn crowded_points() -> impl Strategy<Value = Vec<Vec2>> {
+    let shape = 0u32..4;
+    let ts = prop::collection::vec((0u32..1 << 24, 0u32..1 << 24), 2..300);
+    (shape, ts).prop_map(|(shape, ts)| {
+        ts.iter()
+            .map(|&(a, b)| {
+                let (u, v) = (
+                    a as f32 / (1u32 << 24) as f32,
+                    b as f32 / (1u32 << 24) as f32,
+                );
+                match shape {
+                    0 => Vec2::new(u, u),
+                    1 => Vec2::new(u, (u * 0.5 + v * 1e-6).min(0.999)),
+                    2 => Vec2::new((0.999 + u * 1e-3) % 1.0, (0.999 + v * 1e-3) % 1.0),
+                    _ => Vec2::new((a % 3) as f32 / 3.0 + v * 1e-4, (b % 2) as f32 / 2.0),
+                }
+            })
+            .collect()
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    #[test]
+    fn min_distances_on_crowded_sets_match_brute_force(points in crowded_points()) {
+        prop_assert_eq!(min_distance(&points).unwrap(), brute_min_distance(&points, false));
+        prop_assert_eq!(toroidal_min_distance(&points).unwrap(), brute_min_distance(&points, true));
+    }
 }

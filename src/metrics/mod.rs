@@ -7,13 +7,15 @@
 //! | [`star_discrepancy`] | worst anchored box, exact | O(n log² n) amortised | O(n) |
 //! | [`l2_star_discrepancy`] | RMS of the local discrepancy (Warnock) | O(n log n) | O(n) |
 //! | [`centered_l2_discrepancy`] | Hickernell's centred L2 | O(n log n) | O(n) |
-//! | [`wraparound_l2_discrepancy`] | Hickernell's wrap-around L2 | O(n²), parallel with `rayon` | O(1) |
-//! | [`min_distance`] | closest pair | O(n) expected | O(n) |
-//! | [`toroidal_min_distance`] | closest pair on the torus | O(n) expected | O(n) |
-//! | [`normalized_toroidal_min_distance`] | the above over the hexagonal bound | O(n) expected | O(n) |
+//! | [`wraparound_l2_discrepancy`] | Hickernell's wrap-around L2 | O(n log n) | O(n) |
+//! | [`min_distance`] | closest pair | O(n) spread out, O(n log n) worst case | O(n) |
+//! | [`toroidal_min_distance`] | closest pair on the torus | O(n) spread out, O(n log n) worst case | O(n) |
+//! | [`normalized_toroidal_min_distance`] | the above over the hexagonal bound | as above | O(n) |
 //! | [`is_latin`] | one point per row and column of n x n | O(n) | O(n) |
 //! | [`is_stratified`] | n / (columns rows) points per cell | O(n) | O(columns rows) |
 //! | [`is_net_base2`] | (0, m, 2)-net in base 2 | O(n log n) | O(n) |
+//! | [`net_t_value`] | smallest t of a (t, m, 2)-net in base 2 | O(n log n log log n) | O(n) |
+//! | [`radial_power_spectrum`] | periodogram averaged over rings of \|k\| | O(n K²) for K frequencies | O(min(K², 2^20)) |
 //!
 //! Every metric checks its input first and returns an [`Error`] naming the
 //! first offending point for an empty set, a NaN or infinite coordinate, or a
@@ -37,16 +39,21 @@
 
 mod discrepancy;
 mod distance;
+mod double_double;
+mod spectrum;
 mod stratification;
 
 pub use crate::Error;
 pub use glam::Vec2;
 
+#[doc(hidden)]
+pub use discrepancy::wraparound_l2_discrepancy_quadratic;
 pub use discrepancy::{
     centered_l2_discrepancy, l2_star_discrepancy, star_discrepancy, wraparound_l2_discrepancy,
 };
 pub use distance::{min_distance, normalized_toroidal_min_distance, toroidal_min_distance};
-pub use stratification::{is_latin, is_net_base2, is_stratified};
+pub use spectrum::{MAX_SPECTRUM_FREQUENCY, radial_power_spectrum};
+pub use stratification::{is_latin, is_net_base2, is_stratified, net_t_value};
 
 /// Checks that `points` is non-empty and inside `[0, 1)^2`, naming the first
 /// offending point. `-0.0` passes (it compares equal to `0.0`).
@@ -103,5 +110,43 @@ impl Sum {
     #[inline]
     pub(crate) fn value(self) -> f64 {
         self.sum + self.compensation
+    }
+}
+
+/// Stable LSD radix sort of `items` by the low `bits` bits of `key`, in
+/// passes of 11 bits (all digit counts taken in one first pass; digits that
+/// are the same for every item are skipped): O(n bits / 11) time, one scratch
+/// copy of `items`.
+pub(crate) fn radix_sort<T: Copy + Default>(
+    items: &mut alloc::vec::Vec<T>,
+    key: impl Fn(&T) -> u64,
+    bits: u32,
+) {
+    const DIGIT: u32 = 11;
+    const MASK: u64 = (1 << DIGIT) - 1;
+    let passes = bits.div_ceil(DIGIT) as usize;
+    let mut counts = alloc::vec![[0usize; 1 << DIGIT]; passes];
+    for item in items.iter() {
+        let k = key(item);
+        for (pass, count) in counts.iter_mut().enumerate() {
+            count[((k >> (pass as u32 * DIGIT)) & MASK) as usize] += 1;
+        }
+    }
+    let mut scratch = alloc::vec![T::default(); items.len()];
+    for (pass, start) in counts.iter_mut().enumerate() {
+        if start.contains(&items.len()) {
+            continue;
+        }
+        let mut total = 0;
+        for c in start.iter_mut() {
+            (*c, total) = (total, total + *c);
+        }
+        let shift = pass as u32 * DIGIT;
+        for item in items.iter() {
+            let d = ((key(item) >> shift) & MASK) as usize;
+            scratch[start[d]] = *item;
+            start[d] += 1;
+        }
+        core::mem::swap(items, &mut scratch);
     }
 }

@@ -1,4 +1,5 @@
-//! Stratification checks: Latin (n-rooks), m x k strata, (0, m, 2)-nets.
+//! Stratification checks: Latin (n-rooks), m x k strata, (0, m, 2)-nets and
+//! the t-value of a base-2 net.
 //!
 //! Cells are computed exactly from the f32 values: `floor(x * cells)` is
 //! evaluated in integers from the f32's mantissa and exponent, so a point on a
@@ -174,6 +175,125 @@ pub fn is_net_base2(points: &[Vec2]) -> Result<bool, Error> {
         }
     }
     Ok(true)
+}
+
+/// The t-value of a base-2 net: the smallest `t` for which the set of
+/// `n = 2^m` points is a (t, m, 2)-net in base 2, that is, every elementary
+/// interval `[i/2^a, (i+1)/2^a) x [j/2^b, (j+1)/2^b)` with `a + b = m - t` (area
+/// `2^(t-m)`) holds exactly `2^t` points.
+///
+/// # Properties
+///
+/// `0 <= t <= m`, and `t = 0` exactly when [`is_net_base2`] holds. Every
+/// power-of-two prefix of [`Sobol`](crate::Sobol) and [`Pmj02`](crate::Pmj02)
+/// has `t = 0`; `m` identical points have `t = m` (only the unit square itself
+/// holds all of them). A (t, m, 2)-net is also a (t + 1, m, 2)-net (each larger
+/// elementary interval is the union of two smaller ones), which is what makes a
+/// binary search over `t` valid.
+///
+/// # Cost
+///
+/// One counting pass over exact integer cell indices per shape, O(n) time
+/// each; a check of one `t` visits at most its `m - t + 1` shapes (a failing
+/// one usually stops early), and a galloping then binary search over `t`
+/// checks O(log m) values, starting with `t = 0`, so a (0, m, 2)-net costs
+/// one check: O(n m log m) time in all, O(n) memory. Cells are exact (see
+/// the module docs).
+///
+/// # Limits
+///
+/// f32 values just below 1 are `2^-24` apart, so a set of more than 2^24
+/// points has `t > 0`.
+///
+/// # Errors
+///
+/// [`Error::NotPowerOfTwo`] if `n` is not a power of two, and the point errors
+/// of [`is_latin`].
+///
+/// # Examples
+///
+/// ```
+/// use wellspread::{Sampler2D, Sobol, glam::Vec2, metrics::net_t_value};
+/// let sobol = Sobol::new(256)?;
+/// let mut points = vec![Vec2::ZERO; 256];
+/// sobol.fill(3, &mut points);
+/// assert_eq!(net_t_value(&points)?, 0);
+/// // A 16 x 16 grid of cell corners is a (4, 8, 2)-net: columns 1/32 wide
+/// // are empty or hold 16 points, but every elementary interval of area 1/16
+/// // holds 16.
+/// let grid: Vec<Vec2> = (0..256)
+///     .map(|i| Vec2::new((i % 16) as f32 / 16.0, (i / 16) as f32 / 16.0))
+///     .collect();
+/// assert_eq!(net_t_value(&grid)?, 4);
+/// assert!(net_t_value(&grid[..100]).is_err());
+/// # Ok::<(), wellspread::Error>(())
+/// ```
+///
+/// # References
+///
+/// Niederreiter 1992, "Random Number Generation and Quasi-Monte Carlo
+/// Methods", SIAM, chapter 4 ((t, m, s)-nets).
+pub fn net_t_value(points: &[Vec2]) -> Result<u32, Error> {
+    validate(points)?;
+    let n = points.len();
+    if !n.is_power_of_two() {
+        return Err(Error::NotPowerOfTwo { n });
+    }
+    let m = n.trailing_zeros();
+    let cells: Vec<(u64, u64)> = points
+        .iter()
+        .map(|p| (cell_of(p.x, n as u64), cell_of(p.y, n as u64)))
+        .collect();
+    let mut counts = vec![0u32; n];
+    // Galloping search from t = 0 (the answer for good sets, which then costs
+    // one check), then a binary search. A failing check usually stops early.
+    // Invariant: the set is a (hi, m, 2)-net and not a (lo - 1, m, 2)-net.
+    let (mut lo, mut hi) = (0, m);
+    let mut step = 1;
+    while lo < hi {
+        if is_net_with_t(&cells, m, lo, &mut counts) {
+            hi = lo;
+            break;
+        }
+        let next = (lo + step).min(hi);
+        if is_net_with_t(&cells, m, next, &mut counts) {
+            (lo, hi) = (lo + 1, next);
+            break;
+        }
+        lo = next + 1;
+        step *= 2;
+    }
+    while lo < hi {
+        let t = lo + (hi - lo) / 2;
+        if is_net_with_t(&cells, m, t, &mut counts) {
+            hi = t;
+        } else {
+            lo = t + 1;
+        }
+    }
+    Ok(lo)
+}
+
+/// Whether the points, given as m-bit cell indices, form a (t, m, 2)-net:
+/// for every shape `a + b = m - t`, no elementary interval holds more than
+/// `2^t` points (with `2^m` points in `2^(m-t)` intervals, then all hold
+/// exactly `2^t`).
+fn is_net_with_t(cells: &[(u64, u64)], m: u32, t: u32, counts: &mut [u32]) -> bool {
+    let d = m - t;
+    let cap = 1u32 << t;
+    for a in 0..=d {
+        let b = d - a;
+        let counts = &mut counts[..1 << d];
+        counts.fill(0);
+        for &(x, y) in cells {
+            let id = (((x >> (m - a)) << b) | (y >> (m - b))) as usize;
+            counts[id] += 1;
+            if counts[id] > cap {
+                return false;
+            }
+        }
+    }
+    true
 }
 
 #[cfg(test)]
