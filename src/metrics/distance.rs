@@ -552,10 +552,10 @@ fn grid_pass(points: &[Vec2], torus: bool, bound: f64, budget: u64) -> Option<f6
             compare(&own[k..k + 1], &own[k + 1..], &mut best, &mut compared);
         }
         // Cell (cx + 1, cy); cx + 1 < gx, so the key stays in its row.
-        if let Some(&(next, s2, e2)) = runs.get(r + 1) {
-            if next == key + 1 {
-                compare(own, &sorted[s2..e2], &mut best, &mut compared);
-            }
+        if let Some(&(next, s2, e2)) = runs.get(r + 1)
+            && next == key + 1
+        {
+            compare(own, &sorted[s2..e2], &mut best, &mut compared);
         }
         // Cells (cx - 1 ..= cx + 1, cy + 1); cx + 1 < gx and cx >= 1 there.
         let first = key + gx - u64::from(key % gx != 0);
