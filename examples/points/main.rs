@@ -2,7 +2,7 @@
 //!
 //! ```sh
 //! cargo run --release --example points -- --sampler correlated-multi-jittered --n 16
-//! cargo run --release --example points -- --sampler multi-jittered --n 100 --format svg --out mj.svg
+//! mkdir -p out && cargo run --release --example points -- --sampler multi-jittered --n 100 --format svg --out out/mj.svg
 //! ```
 //!
 //! Run with `--help` for every option, the output format and the exit codes.
