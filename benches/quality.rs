@@ -14,8 +14,8 @@
 //! Markdown tables go to stdout and `target/quality/report.md`; SVG plots
 //! (convergence per integrand, each sampler's points, the spectra) next to
 //! it. The full run also rewrites the generated block of `docs/quality.md`
-//! (between its `quality-report` markers) and copies the point and spectrum
-//! plots to `docs/images/`; `--no-docs` skips that. `--quick` (for CI) runs
+//! (between its `quality-report` markers) and copies the spectrum plot to
+//! `docs/images/`; `--no-docs` skips that. `--quick` (for CI) runs
 //! a small version into `target/quality/quick/` in seconds and never
 //! touches `docs/`. Unknown flags, such as the `--bench` cargo passes, are
 //! ignored.
@@ -679,14 +679,12 @@ const BEGIN: &str = "<!-- quality-report:begin: written by `cargo bench --bench 
 const END: &str = "<!-- quality-report:end -->";
 /// Plots copied from the run's directory to `docs/images/`, as
 /// (file in the run, file in `docs/images/`, alt text).
-const DOCS_PLOTS: [(&str, &str, &str); 2] = [
-    ("points.svg", "quality-points.svg", "every sampler's points"),
-    (
-        "spectrum.svg",
-        "quality-spectrum.svg",
-        "radially averaged power spectra",
-    ),
-];
+/// (The point plot, about 100 kB, stays in `target/quality/`.)
+const DOCS_PLOTS: [(&str, &str, &str); 1] = [(
+    "spectrum.svg",
+    "quality-spectrum.svg",
+    "radially averaged power spectra",
+)];
 
 /// The generated block: the machine and run time, the tables (headings one
 /// level down, under the page's own), and the copied plots.
@@ -721,8 +719,9 @@ fn docs_block(config: &Config, tables: &str, seconds: f64) -> String {
     }
     let _ = writeln!(
         block,
-        "### Plots\n\nPoints at n = {}, and spectra at n = {} (mean of {} patterns, |k| up to {}):\n",
-        config.points_n, config.spectrum_n, config.spectrum_patterns, config.spectrum_radius
+        "### Spectra\n\nAt n = {}, mean of {} patterns, |k| up to {}; the run also writes \
+         `target/quality/points.svg` (every sampler at n = {}) and the convergence plots.\n",
+        config.spectrum_n, config.spectrum_patterns, config.spectrum_radius, config.points_n
     );
     for (_, file, alt) in DOCS_PLOTS {
         let _ = writeln!(block, "![{alt}](images/{file})");
