@@ -172,11 +172,24 @@ fn bad_arguments_are_one_line_errors_with_status_2() {
     }
 }
 
+/// How a tool with a list flag (the tracer's `--sampler`) declares it.
+#[derive(clap::Parser, Debug)]
+struct ListArgs {
+    #[arg(long, value_name = "LIST", value_parser = shared::sampler_list)]
+    sampler: shared::SamplerList,
+}
+
 #[test]
 fn sampler_lists_name_the_unknown_item() {
+    let parse = |args: &[&str]| {
+        shared::parse::<ListArgs>("list", "", args.iter().map(OsString::from), &mut Vec::new())
+    };
+    let parsed = parse(&["--sampler=regular,jittered,regular"])
+        .unwrap()
+        .unwrap();
     assert_eq!(
-        shared::sampler_list("regular,jittered,regular"),
-        Ok(vec![SamplerKind::Regular, SamplerKind::Jittered])
+        parsed.sampler.0,
+        [SamplerKind::Regular, SamplerKind::Jittered]
     );
     let cases = [
         (
@@ -196,6 +209,13 @@ fn sampler_lists_name_the_unknown_item() {
     for (value, expected) in cases {
         let err = shared::sampler_list(value).unwrap_err();
         assert!(err.starts_with(expected), "{value:?}: {err:?}");
+        match parse(&["--sampler", value]) {
+            Err(Failure::Input(message)) => {
+                assert!(message.contains(expected), "{message}");
+                assert!(!message.contains('\n'), "{message}");
+            }
+            other => panic!("{value:?}: {other:?}"),
+        }
     }
 }
 

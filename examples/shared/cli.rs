@@ -134,10 +134,21 @@ pub fn sampler_kind(name: &str) -> Result<SamplerKind, String> {
     })
 }
 
-/// A comma-separated list of sampler names (duplicates dropped), for
-/// clap's `value_parser`. The error names the unknown item.
-pub fn sampler_list(value: &str) -> Result<Vec<SamplerKind>, String> {
-    list(value, sampler_kind)
+/// A comma-separated list of sampler names, duplicates dropped, in the
+/// order given. A newtype, so that clap's derive takes it as one value
+/// (it would read a `Vec` field as repeated flags):
+///
+/// ```ignore
+/// #[arg(long, value_name = "LIST", value_parser = shared::sampler_list)]
+/// sampler: shared::SamplerList,
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SamplerList(pub Vec<SamplerKind>);
+
+/// Parses a [`SamplerList`], for clap's `value_parser`. The error names the
+/// unknown item and its position.
+pub fn sampler_list(value: &str) -> Result<SamplerList, String> {
+    list(value, sampler_kind).map(SamplerList)
 }
 
 /// A comma-separated list, each item parsed by `item`, duplicates dropped
