@@ -13,12 +13,16 @@
 //!
 //! Markdown tables go to stdout and `target/quality/report.md`; SVG plots
 //! (convergence per integrand, each sampler's points, the spectra) next to
-//! it. `--quick` (for CI) runs a small version into `target/quality/quick/`
-//! in seconds. Unknown flags, such as the `--bench` cargo passes, are ignored.
+//! it. The full run also rewrites the generated block of `docs/quality.md`
+//! (between its `quality-report` markers) and copies the spectrum plot to
+//! `docs/images/`; `--no-docs` skips that. `--quick` (for CI) runs
+//! a small version into `target/quality/quick/` in seconds and never
+//! touches `docs/`. Unknown flags, such as the `--bench` cargo passes, are
+//! ignored.
 
 use std::f64::consts::PI;
 use std::fmt::Write as _;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use wellspread::glam::Vec2;
@@ -486,6 +490,7 @@ fn main() {
         config.integrand_patterns,
         config.metric_patterns
     );
+    let tables_start = report.len();
 
     // Integrands: RMSE tables, slopes, convergence plots.
     let rmse = integrand_rmse(&config);
@@ -578,6 +583,8 @@ fn main() {
         report.push('\n');
     }
 
+    let tables_end = report.len();
+
     // Pictures.
     let _ = std::fs::write(dir.join("points.svg"), points_svg(&config));
     let spectra: Vec<(&str, Vec<f64>)> = samplers(config.spectrum_n)
@@ -595,4 +602,102 @@ fn main() {
         eprintln!("cannot write the report: {e}");
         std::process::exit(1);
     }
+    if !config.quick && !std::env::args().any(|a| a == "--no-docs") {
+        let docs = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
+        let block = docs_block(
+            &config,
+            &report[tables_start..tables_end],
+            start.elapsed().as_secs_f64(),
+        );
+        match write_docs(&docs, &dir, &block) {
+            Ok(()) => eprintln!(
+                "rewrote the generated block of {}",
+                docs.join(DOCS_PAGE).display()
+            ),
+            Err(e) => {
+                eprintln!("cannot update {}: {e}", docs.join(DOCS_PAGE).display());
+                std::process::exit(1);
+            }
+        }
+    }
+}
+
+// ---------------------------------------------------------------- docs page
+
+/// The page under `docs/` that the full run refreshes, and the markers
+/// around the part it writes; the prose outside them is kept.
+const DOCS_PAGE: &str = "quality.md";
+const BEGIN: &str = "<!-- quality-report:begin: written by `cargo bench --bench quality`; edits inside are lost -->";
+const END: &str = "<!-- quality-report:end -->";
+/// Plots copied from the run's directory to `docs/images/`, as
+/// (file in the run, file in `docs/images/`, alt text).
+/// (The point plot, about 100 kB, stays in `target/quality/`.)
+const DOCS_PLOTS: [(&str, &str, &str); 1] = [(
+    "spectrum.svg",
+    "quality-spectrum.svg",
+    "radially averaged power spectra",
+)];
+
+/// The generated block: the machine and run time, the tables (headings one
+/// level down, under the page's own), and the copied plots.
+fn docs_block(config: &Config, tables: &str, seconds: f64) -> String {
+    let cpu = std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|info| {
+            info.lines().find_map(|l| {
+                l.strip_prefix("model name")
+                    .map(|v| v.trim_start_matches([' ', '\t', ':']).to_owned())
+            })
+        })
+        .unwrap_or_else(|| "unknown CPU".to_owned());
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let mut block = String::new();
+    let _ = writeln!(
+        block,
+        "Last run: {cpu}, {threads} threads, {seconds:.1} s. n in {:?}; integrand RMSE over {} \
+         patterns, metrics averaged over {} patterns; pattern r is `pattern_seed(r, n, 0, 0)`. \
+         The values are seeded, so any machine gives the same tables.\n",
+        config.sizes, config.integrand_patterns, config.metric_patterns
+    );
+    for line in tables.lines() {
+        match line.strip_prefix("## ") {
+            Some(heading) => {
+                let _ = writeln!(block, "### {heading}");
+            }
+            None => {
+                let _ = writeln!(block, "{line}");
+            }
+        }
+    }
+    let _ = writeln!(
+        block,
+        "### Spectra\n\nAt n = {}, mean of {} patterns, |k| up to {}; the run also writes \
+         `target/quality/points.svg` (every sampler at n = {}) and the convergence plots.\n",
+        config.spectrum_n, config.spectrum_patterns, config.spectrum_radius, config.points_n
+    );
+    for (_, file, alt) in DOCS_PLOTS {
+        let _ = writeln!(block, "![{alt}](images/{file})");
+    }
+    block
+}
+
+/// Replaces the block between [`BEGIN`] and [`END`] in `docs/quality.md`
+/// and copies the plots; the page must already have both markers.
+fn write_docs(docs: &Path, run_dir: &Path, block: &str) -> Result<(), String> {
+    let page_path = docs.join(DOCS_PAGE);
+    let page = std::fs::read_to_string(&page_path).map_err(|e| e.to_string())?;
+    let (Some(begin), Some(end)) = (page.find(BEGIN), page.find(END)) else {
+        return Err(format!("the page lacks the markers {BEGIN:?} and {END:?}"));
+    };
+    if end < begin {
+        return Err("the end marker comes before the begin marker".to_owned());
+    }
+    let page = format!("{}{BEGIN}\n\n{block}\n{}", &page[..begin], &page[end..]);
+    std::fs::write(&page_path, page).map_err(|e| e.to_string())?;
+    std::fs::create_dir_all(docs.join("images")).map_err(|e| e.to_string())?;
+    for (from, to, _) in DOCS_PLOTS {
+        std::fs::copy(run_dir.join(from), docs.join("images").join(to))
+            .map_err(|e| format!("copying {from}: {e}"))?;
+    }
+    Ok(())
 }

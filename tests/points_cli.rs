@@ -6,33 +6,48 @@ mod cli;
 
 use std::ffi::OsString;
 
-use cli::{Command, Format, Options};
+use cli::shared::{self, Failure};
+use cli::{Format, Options};
 use wellspread::{Sampler2D, SamplerKind};
 
-fn parse(args: &[&str]) -> Result<Command, String> {
-    cli::parse(args.iter().map(OsString::from))
+/// Runs the whole tool in-process: exit status, standard output, and the
+/// one line it would print on standard error.
+fn tool(args: &[&str]) -> (u8, String, String) {
+    let mut stdout = Vec::new();
+    let mut stderr = Vec::new();
+    let result = cli::main_with(args.iter().map(OsString::from), &mut stdout);
+    let status = shared::finish("points", result, &mut stderr);
+    (
+        status,
+        String::from_utf8(stdout).unwrap(),
+        String::from_utf8(stderr).unwrap(),
+    )
 }
 
 fn options(args: &[&str]) -> Options {
-    match parse(args) {
-        Ok(Command::Run(options)) => options,
+    match cli::parse(args.iter().map(OsString::from), &mut Vec::new()) {
+        Ok(Some(options)) => options,
         other => panic!("{args:?}: {other:?}"),
     }
 }
 
 fn output(args: &[&str]) -> String {
-    let mut out = Vec::new();
-    cli::write_points(&options(args), &mut out).unwrap();
-    String::from_utf8(out).unwrap()
+    let (status, out, err) = tool(args);
+    assert_eq!((status, err.as_str()), (0, ""), "{args:?}");
+    out
 }
 
 #[test]
-fn every_sampler_name_parses() {
+fn every_sampler_name_parses_with_and_without_equals() {
     for &kind in SamplerKind::ALL {
-        let o = options(&["--sampler", kind.name(), "--n", "10"]);
-        assert_eq!(o.sampler.kind(), kind);
-        assert_eq!(o.sampler.len(), 10);
-        assert_eq!((o.pattern, o.format, o.out), (0, Format::Csv, None));
+        for o in [
+            options(&["--sampler", kind.name(), "--n", "10"]),
+            options(&[&format!("--sampler={kind}"), "--n=10"]),
+        ] {
+            assert_eq!(o.sampler.kind(), kind);
+            assert_eq!(o.sampler.len(), 10);
+            assert_eq!((o.pattern, o.format, o.out), (0, Format::Csv, None));
+        }
     }
 }
 
@@ -41,8 +56,7 @@ fn options_parse_in_any_order() {
     let o = options(&[
         "--format",
         "svg",
-        "--out",
-        "a.svg",
+        "--out=a.svg",
         "--pattern",
         "0xDEADbeef",
         "--n",
@@ -53,44 +67,58 @@ fn options_parse_in_any_order() {
     assert_eq!(o.sampler.len(), u32::MAX);
     assert_eq!(o.pattern, 0xdead_beef);
     assert_eq!(o.format, Format::Svg);
-    assert_eq!(o.out, Some(OsString::from("a.svg")));
+    assert_eq!(o.out, Some("a.svg".into()));
     assert_eq!(
-        options(&[
-            "--sampler",
-            "jittered",
-            "--n",
-            "3",
-            "--pattern",
-            "4294967295"
-        ])
-        .pattern,
+        options(&["--sampler", "jittered", "--n", "3", "--pattern=4294967295"]).pattern,
         u32::MAX
     );
 }
 
 #[test]
-fn help_wins_and_lists_the_samplers() {
-    for args in [&["--help"][..], &["-h"], &["--sampler", "nope", "--help"]] {
-        assert_eq!(parse(args), Ok(Command::Help), "{args:?}");
-    }
-    let usage = cli::usage();
-    for &kind in SamplerKind::ALL {
-        assert!(usage.contains(kind.name()), "{usage}");
+fn help_lists_every_option_the_samplers_the_format_and_the_exit_codes() {
+    for args in [&["--help"][..], &["-h"], &["--sampler", "random", "--help"]] {
+        let (status, help, err) = tool(args);
+        assert_eq!((status, err.as_str()), (0, ""), "{args:?}");
+        for needle in [
+            "--sampler",
+            "--n ",
+            "--pattern",
+            "--format",
+            "--out",
+            "--help",
+            "csv",
+            "svg",
+            "Exit status",
+            " 2 ",
+            " 1 ",
+        ] {
+            assert!(help.contains(needle), "{args:?} lacks {needle:?}:\n{help}");
+        }
+        for &kind in SamplerKind::ALL {
+            assert!(help.contains(kind.name()), "{args:?} lacks {kind}");
+        }
     }
 }
 
 #[test]
-fn bad_arguments_are_one_line_errors() {
+fn bad_arguments_are_one_line_errors_with_status_2() {
     let cases: &[(&[&str], &str)] = &[
-        (&["--sampler", "nope", "--n", "4"], "unknown sampler"),
+        (
+            &["--sampler", "nope", "--n", "4"],
+            "unknown sampler \"nope\"",
+        ),
+        (
+            &["--sampler", "regular, jittered", "--n", "4"],
+            "unknown sampler \"regular, jittered\"",
+        ),
         (&["--sampler", "jittered", "--n", "0"], "n = 0"),
         (
             &["--sampler", "jittered", "--n", "-3"],
-            "not a whole number",
+            "\"-3\" is not a whole number",
         ),
         (
-            &["--sampler", "jittered", "--n", "lots"],
-            "not a whole number",
+            &["--sampler", "jittered", "--n=lots"],
+            "\"lots\" is not a whole number",
         ),
         (
             &["--sampler", "jittered", "--n", "4294967296"],
@@ -114,7 +142,7 @@ fn bad_arguments_are_one_line_errors() {
                 "--pattern",
                 "0x1_0000_0000",
             ],
-            "--pattern",
+            "\"0x1_0000_0000\" is not a number",
         ),
         (
             &["--sampler", "random", "--n", "4", "--pattern", "4294967296"],
@@ -122,42 +150,86 @@ fn bad_arguments_are_one_line_errors() {
         ),
         (
             &["--sampler", "random", "--n", "4", "--format", "png"],
-            "csv or svg",
+            "csv, svg",
         ),
-        (&["--sampler", "random", "--n"], "--n needs a value"),
-        (&["--sampler"], "--sampler needs a value"),
-        (
-            &["--sampler", "random", "--n", "4", "--bogus"],
-            "unknown argument",
-        ),
-        (&["random", "--n", "4"], "unknown argument"),
-        (&["--n", "4"], "--sampler NAME is required"),
-        (&["--sampler", "random"], "--n N is required"),
-        (&[], "is required"),
-        (
-            &["--sampler", "random", "--n", "4", "--n", "5"],
-            "given twice",
-        ),
+        (&["--sampler", "random", "--n"], "--n <N>"),
+        (&["--sampler"], "--sampler <NAME>"),
+        (&["--sampler", "random", "--n", "4", "--bogus"], "'--bogus'"),
+        (&["random", "--n", "4"], "'random'"),
+        (&["--n", "4"], "--sampler <NAME>"),
+        (&["--sampler", "random"], "--n <N>"),
+        (&[], "--sampler <NAME> --n <N>"),
+        (&["--sampler", "random", "--n", "4", "--n", "5"], "--n <N>"),
     ];
     for &(args, expected) in cases {
-        match parse(args) {
-            Err(message) => {
-                assert!(
-                    message.contains(expected),
-                    "{args:?}: {message:?} lacks {expected:?}"
-                );
-                assert!(
-                    !message.contains('\n'),
-                    "{args:?}: {message:?} is not one line"
-                );
+        let (status, out, err) = tool(args);
+        assert_eq!((status, out.as_str()), (2, ""), "{args:?}: {err}");
+        assert!(
+            err.starts_with("points: ") && err.contains(expected),
+            "{args:?}: {err:?} lacks {expected:?}"
+        );
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err:?} is not one line");
+    }
+}
+
+/// How a tool with a list flag (the tracer's `--sampler`) declares it.
+#[derive(clap::Parser, Debug)]
+struct ListArgs {
+    #[arg(long, value_name = "LIST", value_parser = shared::sampler_list)]
+    sampler: shared::SamplerList,
+}
+
+#[test]
+fn sampler_lists_name_the_unknown_item() {
+    let parse = |args: &[&str]| {
+        shared::parse::<ListArgs>("list", "", args.iter().map(OsString::from), &mut Vec::new())
+    };
+    let parsed = parse(&["--sampler=regular,jittered,regular"])
+        .unwrap()
+        .unwrap();
+    assert_eq!(
+        parsed.sampler.0,
+        [SamplerKind::Regular, SamplerKind::Jittered]
+    );
+    let cases = [
+        (
+            "regular, jittered",
+            "item 2 of \"regular, jittered\": unknown sampler \" jittered\" (no spaces around names)",
+        ),
+        (
+            "jittered,jitterd",
+            "item 2 of \"jittered,jitterd\": unknown sampler \"jitterd\";",
+        ),
+        ("sobol,,pmj02", "item 2 of \"sobol,,pmj02\": empty name"),
+        (
+            "halton2",
+            "unknown sampler \"halton2\"; expected one of: regular random",
+        ),
+    ];
+    for (value, expected) in cases {
+        let err = shared::sampler_list(value).unwrap_err();
+        assert!(err.starts_with(expected), "{value:?}: {err:?}");
+        match parse(&["--sampler", value]) {
+            Err(Failure::Input(message)) => {
+                assert!(message.contains(expected), "{message}");
+                assert!(!message.contains('\n'), "{message}");
             }
-            Ok(command) => panic!("{args:?} parsed as {command:?}"),
+            other => panic!("{value:?}: {other:?}"),
         }
     }
 }
 
 #[test]
-fn csv_is_every_point_round_tripped() {
+fn failures_map_to_the_documented_exit_codes() {
+    assert_eq!(Failure::Input(String::new()).status(), 2);
+    assert_eq!(Failure::Io(String::new()).status(), 1);
+    let mut stderr = Vec::new();
+    assert_eq!(shared::finish("t", Ok(()), &mut stderr), 0);
+    assert!(stderr.is_empty());
+}
+
+#[test]
+fn csv_round_trips_exactly_through_f32_and_f64_parsers() {
     for &kind in SamplerKind::ALL {
         let csv = output(&["--sampler", kind.name(), "--n", "37", "--pattern", "99"]);
         let sampler = kind.build(37).unwrap();
@@ -166,11 +238,73 @@ fn csv_is_every_point_round_tripped() {
         for (index, line) in (0..).zip(lines) {
             let (x, y) = line.split_once(',').unwrap();
             let p = sampler.sample(index, 99);
-            assert_eq!(x.parse::<f32>().unwrap().to_bits(), p.x.to_bits(), "{line}");
-            assert_eq!(y.parse::<f32>().unwrap().to_bits(), p.y.to_bits(), "{line}");
-            assert_eq!(line, format!("{},{}", p.x, p.y));
+            for (text, v) in [(x, p.x), (y, p.y)] {
+                assert_eq!(
+                    text.parse::<f32>().unwrap().to_bits(),
+                    v.to_bits(),
+                    "{line}"
+                );
+                assert_eq!(text.parse::<f64>().unwrap(), f64::from(v), "{line}");
+            }
         }
     }
+    // The value from the issue: 3543/4096 printed as the shortest f32,
+    // `0.86499023`, reads as 0.86499022999... in f64, below 3543/4096.
+    assert_eq!(cli::csv_value(3543.0 / 4096.0), "0.864990234375");
+    assert!("0.86499023".parse::<f64>().unwrap() < 3543.0 / 4096.0);
+}
+
+/// Points parsed as f64, the way numpy or pandas read the CSV.
+fn read_f64(args: &[&str]) -> Vec<(f64, f64)> {
+    output(args)
+        .lines()
+        .map(|line| {
+            let (x, y) = line.split_once(',').unwrap();
+            (x.parse().unwrap(), y.parse().unwrap())
+        })
+        .collect()
+}
+
+/// Whether every one of `cells` (by `cell(x, y)`) holds exactly one point.
+fn one_per_cell(points: &[(f64, f64)], cells: usize, cell: impl Fn(f64, f64) -> usize) -> bool {
+    let mut seen = vec![false; cells];
+    points.len() == cells
+        && points.iter().all(|&(x, y)| {
+            let c = cell(x, y);
+            c < cells && !std::mem::replace(&mut seen[c], true)
+        })
+}
+
+#[test]
+fn strata_hold_exactly_on_csv_read_as_f64() {
+    // x * n is exact in f64 for these n: x has at most 24 significant bits.
+    let stratum = |v: f64, parts: u32| (v * f64::from(parts)).floor() as usize;
+    let rooks = |points: &[(f64, f64)], n: u32| {
+        let n_usize = n as usize;
+        one_per_cell(points, n_usize, |x, _| stratum(x, n))
+            && one_per_cell(points, n_usize, |_, y| stratum(y, n))
+    };
+    let grid = |points: &[(f64, f64)], columns: u32, rows: u32| {
+        one_per_cell(points, (columns * rows) as usize, |x, y| {
+            stratum(y, rows) * columns as usize + stratum(x, columns)
+        })
+    };
+    // The issue's case: n-rooks at n = 4096, pattern 0.
+    let points = read_f64(&["--sampler", "n-rooks", "--n", "4096"]);
+    assert!(rooks(&points, 4096));
+    for (n, columns, rows) in [(4096, 64, 64), (1000, 25, 40), (12, 3, 4)] {
+        let count = n.to_string();
+        let jittered = read_f64(&["--sampler", "jittered", "--n", &count, "--pattern", "7"]);
+        assert!(grid(&jittered, columns, rows), "jittered n = {n}");
+        for name in ["multi-jittered", "correlated-multi-jittered"] {
+            let points = read_f64(&["--sampler", name, "--n", &count, "--pattern", "7"]);
+            assert!(grid(&points, columns, rows), "{name} n = {n}");
+            assert!(rooks(&points, n), "{name} n = {n}");
+        }
+    }
+    // The check is strict enough to fail: random points are not Latin.
+    let random = read_f64(&["--sampler", "random", "--n", "4096"]);
+    assert!(!rooks(&random, 4096));
 }
 
 fn count(haystack: &str, needle: &str) -> usize {
@@ -229,29 +363,27 @@ fn svg_draws_points_and_the_promised_strata() {
 }
 
 #[test]
-fn out_writes_the_file() {
+fn out_writes_the_file_and_io_failure_is_status_1() {
     let path = std::env::temp_dir().join(format!("wellspread-points-{}.csv", std::process::id()));
     let path_text = path.to_str().unwrap();
-    let args = [
-        "--sampler",
-        "multi-jittered",
-        "--n",
-        "25",
-        "--out",
-        path_text,
-    ];
-    cli::run(&options(&args)).unwrap();
+    let args = ["--sampler", "multi-jittered", "--n", "25"];
+    let (status, out, err) = tool(&[&args[..], &["--out", path_text]].concat());
+    assert_eq!((status, out.as_str(), err.as_str()), (0, "", ""));
     let written = std::fs::read_to_string(&path).unwrap();
     std::fs::remove_file(&path).unwrap();
     assert_eq!(written, output(&args));
     assert_eq!(written.lines().count(), 25);
-    let missing = [
+    let (status, out, err) = tool(&[
         "--sampler",
         "random",
         "--n",
         "2",
         "--out",
         "/nonexistent-dir/x.csv",
-    ];
-    assert!(cli::run(&options(&missing)).is_err());
+    ]);
+    assert_eq!((status, out.as_str()), (1, ""));
+    assert!(
+        err.starts_with("points: cannot create /nonexistent-dir/x.csv: "),
+        "{err}"
+    );
 }

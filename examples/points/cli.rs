@@ -4,160 +4,124 @@
 use std::ffi::OsString;
 use std::fs::File;
 use std::io::{self, BufWriter, Write};
+use std::path::PathBuf;
 
+use clap::{Parser, ValueEnum};
 use wellspread::{AnySampler, Sampler2D, SamplerKind};
 
-/// What `--help` prints: [`USAGE`] and the sampler names.
-pub fn usage() -> String {
-    let mut text = String::from(USAGE);
-    text += "\nSamplers:";
-    for kind in SamplerKind::ALL {
-        text += &format!(" {kind}");
-    }
-    text + "\n"
+#[path = "../shared/cli.rs"]
+pub mod shared;
+
+use shared::Failure;
+
+/// Writes the N points of one wellspread sample pattern.
+#[derive(Parser, Debug)]
+pub struct Args {
+    /// Sampler name, one of those listed below
+    #[arg(long, value_name = "NAME", value_parser = shared::sampler_kind)]
+    pub sampler: SamplerKind,
+    /// Number of points, from 1 to the sampler's limit
+    #[arg(long, value_name = "N", allow_negative_numbers = true, value_parser = shared::whole_number)]
+    pub n: u32,
+    /// Which randomisation, decimal or 0x hex
+    #[arg(long, value_name = "P", default_value = "0", value_parser = shared::u32_dec_or_hex)]
+    pub pattern: u32,
+    /// Output format (see below)
+    #[arg(long, value_enum, default_value_t = Format::Csv)]
+    pub format: Format,
+    /// Write to FILE instead of standard output
+    #[arg(long, value_name = "FILE")]
+    pub out: Option<PathBuf>,
 }
 
-/// The fixed part of the help text.
-pub const USAGE: &str = "\
-usage: points --sampler NAME --n N [--pattern P] [--format csv|svg] [--out FILE]
+/// What `--help` prints after the options.
+pub fn after_help() -> String {
+    format!(
+        "\
+Samplers: {}
 
-Writes the N points of one wellspread sample pattern.
+Output: csv (default) is one `x,y` line per point, no header. Each value is
+the shortest decimal of the f32 widened to f64, so f32 and f64 parsers
+(Rust, numpy, pandas) both read back the exact f32 the sampler returned.
+svg is the unit square with the sampler's strata and the points, y up.
 
-  --sampler NAME   one of the samplers listed below
-  --n N            number of points, from 1 to the sampler's limit
-  --pattern P      which randomisation, decimal or 0x hex (default 0)
-  --format F       csv: one `x,y` line per point, shortest round-trip
-                   floats, no header (default); svg: the unit square with
-                   the sampler's strata and the points, y pointing up
-  --out FILE       write to FILE instead of standard output
-  --help           print this and exit
-
-Exit status: 0 on success, 2 for bad arguments, 1 if writing fails.
-";
+{}",
+        shared::sampler_names(),
+        shared::EXIT_CODES
+    )
+}
 
 /// Output format.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum Format {
-    /// One `x,y` line per point.
+    /// One `x,y` line per point
     Csv,
-    /// A picture of the unit square, its strata and the points.
+    /// A picture of the unit square, its strata and the points
     Svg,
 }
 
-/// A parsed command line.
+/// A checked command line.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Options {
     pub sampler: AnySampler,
     pub pattern: u32,
     pub format: Format,
-    pub out: Option<OsString>,
+    pub out: Option<PathBuf>,
 }
 
-/// What the command line asks for.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Command {
-    Help,
-    Run(Options),
-}
-
-/// Parses the arguments after the program name. An `Err` is a one-line
-/// message for standard error.
-pub fn parse<I: IntoIterator<Item = OsString>>(args: I) -> Result<Command, String> {
-    let mut sampler = None;
-    let mut n = None;
-    let mut pattern = None;
-    let mut format = None;
-    let mut out = None;
-    let mut args = args.into_iter();
-    while let Some(arg) = args.next() {
-        let flag = arg
-            .to_str()
-            .ok_or_else(|| format!("argument {arg:?} is not valid UTF-8"))?
-            .to_owned();
-        if flag == "--help" || flag == "-h" {
-            return Ok(Command::Help);
-        }
-        let slot: &mut Option<OsString> = match flag.as_str() {
-            "--sampler" => &mut sampler,
-            "--n" => &mut n,
-            "--pattern" => &mut pattern,
-            "--format" => &mut format,
-            "--out" => &mut out,
-            _ => return Err(format!("unknown argument {flag:?} (try --help)")),
-        };
-        let value = args
-            .next()
-            .ok_or_else(|| format!("{flag} needs a value (try --help)"))?;
-        if slot.replace(value).is_some() {
-            return Err(format!("{flag} given twice"));
-        }
-    }
-
-    let text = |flag: &str, value: OsString| {
-        value
-            .into_string()
-            .map_err(|v| format!("{flag} {v:?} is not valid UTF-8"))
+/// Parses the arguments after the program name. `Ok(None)`: the help was
+/// written to `help_out`.
+pub fn parse<I: IntoIterator<Item = OsString>>(
+    args: I,
+    help_out: &mut dyn Write,
+) -> Result<Option<Options>, Failure> {
+    let Some(args) = shared::parse::<Args>("points", &after_help(), args, help_out)? else {
+        return Ok(None);
     };
-    let name = text(
-        "--sampler",
-        sampler.ok_or("--sampler NAME is required (try --help)")?,
-    )?;
-    let kind: SamplerKind = name
-        .parse()
-        .map_err(|e| format!("--sampler {name:?}: {e}"))?;
-    let n = text("--n", n.ok_or("--n N is required (try --help)")?)?;
-    let count: u32 = n
-        .parse()
-        .map_err(|_| format!("--n {n:?} is not a whole number from 1 to {}", u32::MAX))?;
-    let sampler = kind.build(count).map_err(|e| format!("--n {count}: {e}"))?;
-    let pattern = match pattern {
-        None => 0,
-        Some(p) => {
-            let p = text("--pattern", p)?;
-            parse_u32(&p).ok_or_else(|| {
-                format!(
-                    "--pattern {p:?} is not a number from 0 to {} (decimal or 0x hex)",
-                    u32::MAX
-                )
-            })?
-        }
-    };
-    let format = match format.map(|f| text("--format", f)).transpose()?.as_deref() {
-        None | Some("csv") => Format::Csv,
-        Some("svg") => Format::Svg,
-        Some(other) => return Err(format!("--format {other:?}: expected csv or svg")),
-    };
-    Ok(Command::Run(Options {
+    let sampler = args
+        .sampler
+        .build(args.n)
+        .map_err(|e| Failure::Input(format!("--n {}: {e}", args.n)))?;
+    Ok(Some(Options {
         sampler,
-        pattern,
-        format,
-        out,
+        pattern: args.pattern,
+        format: args.format,
+        out: args.out,
     }))
 }
 
-fn parse_u32(text: &str) -> Option<u32> {
-    match text.strip_prefix("0x").or_else(|| text.strip_prefix("0X")) {
-        Some(hex) => u32::from_str_radix(hex, 16).ok(),
-        None => text.parse().ok(),
+/// The whole tool: parses `args`, writes the points to `--out` or
+/// `stdout` (the help too), and returns the outcome for
+/// [`shared::finish`].
+pub fn main_with<I: IntoIterator<Item = OsString>>(
+    args: I,
+    stdout: &mut dyn Write,
+) -> Result<(), Failure> {
+    match parse(args, stdout)? {
+        None => Ok(()),
+        Some(options) => run(&options, stdout),
     }
 }
 
-/// Writes the points to `--out` or standard output. A closed pipe (`| head`)
-/// is not an error.
-pub fn run(options: &Options) -> io::Result<()> {
+/// Writes the points to `--out` or `stdout`. A closed pipe (`| head`) is
+/// not an error.
+pub fn run(options: &Options, stdout: &mut dyn Write) -> Result<(), Failure> {
     let result = match &options.out {
         Some(path) => {
-            let mut file = BufWriter::new(File::create(path)?);
+            let file = File::create(path)
+                .map_err(|e| Failure::Io(format!("cannot create {}: {e}", path.display())))?;
+            let mut file = BufWriter::new(file);
             write_points(options, &mut file).and_then(|()| file.flush())
         }
         None => {
-            let mut stdout = BufWriter::new(io::stdout().lock());
+            let mut stdout = BufWriter::new(stdout);
             write_points(options, &mut stdout).and_then(|()| stdout.flush())
         }
     };
     match result {
         Err(e) if e.kind() == io::ErrorKind::BrokenPipe => Ok(()),
-        other => other,
+        Err(e) => Err(Failure::Io(format!("cannot write the points: {e}"))),
+        Ok(()) => Ok(()),
     }
 }
 
@@ -172,10 +136,18 @@ pub fn write_points(options: &Options, out: &mut dyn Write) -> io::Result<()> {
 fn write_csv(sampler: &AnySampler, pattern: u32, out: &mut dyn Write) -> io::Result<()> {
     for index in 0..sampler.len() {
         let p = sampler.sample(index, pattern);
-        // `{}` on f32 is the shortest text that parses back to the same f32.
-        writeln!(out, "{},{}", p.x, p.y)?;
+        writeln!(out, "{},{}", csv_value(p.x), csv_value(p.y))?;
     }
     Ok(())
+}
+
+/// One CSV value: the shortest decimal that parses back to the f32
+/// widened to f64. Parsed as f64 it is that f64 exactly, and parsed as f32
+/// it is the f32, because the decimal is within half an f64 ulp of it,
+/// far inside the f32 rounding interval. (The shortest f32 decimal can be
+/// up to half an f32 ulp away, which an f64 reader keeps.)
+pub fn csv_value(v: f32) -> String {
+    format!("{}", f64::from(v))
 }
 
 /// What a sampler's picture should show: its coarse grid, if it has one,

@@ -1,0 +1,94 @@
+//! What a new user meets first: the README's size, commands and links,
+//! the pages under `docs/`, and the files `.ci/run` names.
+
+use std::path::Path;
+
+fn read(path: &str) -> String {
+    let full = Path::new(env!("CARGO_MANIFEST_DIR")).join(path);
+    std::fs::read_to_string(&full).unwrap_or_else(|e| panic!("{}: {e}", full.display()))
+}
+
+/// The targets of the Markdown links and images in `text`: `](target)`.
+fn link_targets(text: &str) -> Vec<&str> {
+    text.split("](")
+        .skip(1)
+        .map(|rest| &rest[..rest.find(')').unwrap()])
+        .collect()
+}
+
+#[test]
+fn readme_is_short_and_has_the_two_commands() {
+    let readme = read("README.md");
+    assert!(readme.len() <= 8000, "README is {} bytes", readme.len());
+    assert!(readme.contains("\ncargo run --release --example tracer "));
+    assert!(readme.contains("\ncargo test "));
+    // No timings: costs are ratios, measurements live under docs/.
+    for unit in [" ns", " ms", "ns per", " s on"] {
+        assert!(!readme.contains(unit), "README mentions {unit:?}");
+    }
+    let images = readme.matches("\n![").count();
+    assert_eq!(images, 1, "one picture");
+}
+
+#[test]
+fn readme_pipes_carry_no_cargo_output() {
+    // `cargo run` prints "Blocking waiting for file lock" and build lines
+    // on stderr, which a shell pipe interleaves with the tools' own.
+    for line in read("README.md").lines().filter(|l| l.contains(" | ")) {
+        if !line.starts_with('|') {
+            assert!(!line.contains("cargo run"), "{line}");
+        }
+    }
+}
+
+#[test]
+fn every_relative_link_in_the_readme_and_docs_exists() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    for page in [
+        "README.md",
+        "docs/tracer.md",
+        "docs/quality.md",
+        "docs/performance.md",
+    ] {
+        let dir = root.join(page).parent().unwrap().to_owned();
+        let text = read(page);
+        let page_lines = text.lines().next().unwrap_or_default();
+        assert!(page_lines.starts_with("# "), "{page} has a title");
+        for target in link_targets(&text) {
+            if target.contains("://") || target.starts_with('#') {
+                continue;
+            }
+            let file = target.split('#').next().unwrap();
+            assert!(dir.join(file).exists(), "{page} links to missing {target}");
+        }
+    }
+}
+
+#[test]
+fn docs_pages_start_with_their_regeneration_command_and_machine() {
+    for (page, command) in [
+        ("docs/tracer.md", "`cargo run --release --example tracer`"),
+        ("docs/quality.md", "`cargo bench --bench quality`"),
+        ("docs/performance.md", "`cargo bench --bench speed`"),
+    ] {
+        let text = read(page);
+        let head: String = text.lines().take(12).collect::<Vec<_>>().join("\n");
+        assert!(
+            head.contains(command),
+            "{page} does not start with {command}"
+        );
+        assert!(head.contains("Machine"), "{page} does not name its machine");
+    }
+}
+
+#[test]
+fn ci_script_names_only_files_that_exist() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let script = read(".ci/run");
+    for word in script.split(|c: char| c.is_whitespace() || c == '(' || c == ')') {
+        let word = word.trim_matches(|c: char| c == ',' || c == '.' || c == ':');
+        if word.ends_with(".md") {
+            assert!(root.join(word).exists(), ".ci/run names missing {word}");
+        }
+    }
+}

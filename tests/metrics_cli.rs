@@ -1,0 +1,272 @@
+//! The `metrics` example run in-process (Cargo gives integration tests no
+//! path to example binaries): input parsing, the JSON it prints and its
+//! exit codes.
+
+#[allow(dead_code)] // the example's `main`
+#[path = "../examples/metrics.rs"]
+mod tool;
+
+// Both tools include examples/shared/cli.rs, each as its own module.
+#[allow(clippy::duplicate_mod)]
+#[path = "../examples/points/cli.rs"]
+mod points;
+
+use std::ffi::OsString;
+
+/// Exit status, standard output and standard error of one run.
+fn run(args: &[&str], stdin: &[u8]) -> (u8, String, String) {
+    let mut stdout = Vec::new();
+    let mut stderr = Vec::new();
+    let result = tool::main_with(
+        args.iter().map(OsString::from),
+        &mut &stdin[..],
+        &mut stdout,
+    );
+    let status = tool::shared::finish("metrics", result, &mut stderr);
+    (
+        status,
+        String::from_utf8(stdout).unwrap(),
+        String::from_utf8(stderr).unwrap(),
+    )
+}
+
+/// The fields of the JSON line, in order, as (name, raw value).
+fn fields(json: &str) -> Vec<(String, String)> {
+    let body = json.trim_end().strip_prefix('{').unwrap().strip_suffix('}');
+    body.unwrap()
+        .split(", ")
+        .map(|field| {
+            let (name, value) = field.split_once(": ").unwrap();
+            (name.trim_matches('"').to_owned(), value.to_owned())
+        })
+        .collect()
+}
+
+fn field(json: &str, name: &str) -> String {
+    let found = fields(json).into_iter().find(|(k, _)| k == name);
+    found.unwrap_or_else(|| panic!("no {name} in {json}")).1
+}
+
+fn ok(args: &[&str], stdin: &[u8]) -> String {
+    let (status, out, err) = run(args, stdin);
+    assert_eq!((status, err.as_str()), (0, ""), "{args:?}");
+    assert_eq!(out.lines().count(), 1, "{out}");
+    out
+}
+
+const ALL_FIELDS: [&str; 11] = [
+    "n",
+    "star_discrepancy",
+    "l2_star_discrepancy",
+    "centered_l2_discrepancy",
+    "wraparound_l2_discrepancy",
+    "min_distance",
+    "toroidal_min_distance",
+    "normalized_toroidal_min_distance",
+    "is_latin",
+    "is_net_base2",
+    "t_value",
+];
+
+#[test]
+fn a_byte_order_mark_and_a_header_are_skipped() {
+    let plain = ok(&[], b"0.5,0.5\n0.25,0.75\n");
+    assert_eq!(field(&plain, "n"), "2");
+    for input in [
+        &b"\xef\xbb\xbf0.5,0.5\n0.25,0.75\n"[..],
+        b"x,y\n0.5,0.5\n0.25,0.75\n",
+        b"\xef\xbb\xbf\"x\", \"y\"\r\n0.5,0.5\r\n\r\n0.25,0.75",
+        b"\n\nx,y,label\n0.5,0.5\n0.25,0.75\n",
+    ] {
+        assert_eq!(ok(&[], input), plain, "{}", String::from_utf8_lossy(input));
+    }
+}
+
+#[test]
+fn every_input_error_names_its_line() {
+    let cases: &[(&[u8], &str)] = &[
+        // A first line with a numeric field is data, not a header.
+        (
+            b"0.5,0.5,extra\n0.25,0.75\n",
+            "line 1: expected `x,y` (two numbers), got 3 fields",
+        ),
+        (b"x,0.5\n0.25,0.75\n", "line 1: x = `x` is not a number"),
+        (b"0.5,0.5\nx,y\n", "line 2: x = `x` is not a number"),
+        (
+            b"\xef\xbb\xbf0.5\n",
+            "line 1: expected `x,y` (two numbers), got 1 fields",
+        ),
+        (
+            b"x,y\n\n0.5,0.5\n1,0.5\n",
+            "line 4: x = 1 is outside [0, 1)",
+        ),
+        (
+            b"0.5,0.5\n0.5,-0.25\n",
+            "line 2: y = -0.25 is outside [0, 1)",
+        ),
+        (
+            b"0.5,0.5\n0.5,0.5\nNaN,0.5\n",
+            "line 3: x = NaN is not finite",
+        ),
+        (b"0.5,inf\n", "line 1: y = inf is not finite"),
+        (
+            b"0.5,0.99999999\n",
+            "line 1: y = 0.99999999 rounds to 1 in f32",
+        ),
+        (b"0.5,0.5\n0.5,0.5\n\xff,0.5\n", "line 3: not UTF-8 text"),
+        (b"", "no points in the input"),
+        (b"x,y\n\n", "no points in the input"),
+    ];
+    for &(input, expected) in cases {
+        let (status, out, err) = run(&[], input);
+        let shown = String::from_utf8_lossy(input);
+        assert_eq!((status, out.as_str()), (2, ""), "{shown:?}: {err}");
+        assert!(
+            err.starts_with("metrics: ") && err.contains(expected),
+            "{shown:?}: {err:?} lacks {expected:?}"
+        );
+        assert_eq!(err.lines().count(), 1, "{err:?}");
+    }
+}
+
+#[test]
+fn one_point_reports_every_defined_metric_and_null_for_the_rest() {
+    let json = ok(&["--stratified", "1x1"], b"0.5,0.5\n");
+    let names: Vec<String> = fields(&json).into_iter().map(|(k, _)| k).collect();
+    assert_eq!(names[..11], ALL_FIELDS, "{json}");
+    assert_eq!(names[11], "is_stratified");
+    // One point is a (0, 0, 2)-net.
+    assert_eq!(field(&json, "t_value"), "0");
+    // One point at the centre: the box [0, 1) x [0, 0.5] holds it with
+    // volume just over 1/4, so D* = 3/4.
+    assert_eq!(field(&json, "n"), "1");
+    assert_eq!(field(&json, "star_discrepancy"), "0.75");
+    for name in [
+        "min_distance",
+        "toroidal_min_distance",
+        "normalized_toroidal_min_distance",
+    ] {
+        assert_eq!(field(&json, name), "null", "{name}");
+    }
+    for name in ["is_latin", "is_net_base2", "is_stratified"] {
+        assert_eq!(field(&json, name), "true", "{name}");
+    }
+    for name in [
+        "l2_star_discrepancy",
+        "centered_l2_discrepancy",
+        "wraparound_l2_discrepancy",
+    ] {
+        let value: f64 = field(&json, name).parse().unwrap();
+        assert!(value > 0.0 && value < 1.0, "{name} = {value}");
+    }
+    // n = 3 is not a power of two: only the net check is undefined.
+    let json = ok(&[], b"0.1,0.2\n0.5,0.6\n0.7,0.9\n");
+    assert_eq!(field(&json, "is_net_base2"), "null");
+    assert_eq!(field(&json, "t_value"), "null");
+    assert_eq!(field(&json, "is_latin"), "true");
+    // The closest pair is (0.5, 0.6) and (0.7, 0.9): sqrt(0.2^2 + 0.3^2).
+    let min_distance: f64 = field(&json, "min_distance").parse().unwrap();
+    assert!(
+        (min_distance - 0.13f64.sqrt()).abs() < 1e-6,
+        "{min_distance}"
+    );
+}
+
+#[test]
+fn points_piped_into_metrics() {
+    let mut csv = Vec::new();
+    let args = ["--sampler", "multi-jittered", "--n", "64", "--pattern", "3"];
+    points::main_with(args.map(OsString::from), &mut csv).unwrap();
+    for grid in [&["--stratified", "8x8"][..], &["--stratified=8x8", "-"]] {
+        let json = ok(grid, &csv);
+        assert_eq!(field(&json, "n"), "64");
+        assert_eq!(field(&json, "is_latin"), "true");
+        assert_eq!(field(&json, "is_stratified"), "true");
+        let d_star: f64 = field(&json, "star_discrepancy").parse().unwrap();
+        assert!(d_star > 1.0 / 64.0 && d_star < 0.1, "{d_star}");
+    }
+    // Sobol and pmj02 prefixes are (0, m, 2)-nets; four points stacked in
+    // one column of width 1/4 are only a (2, 2, 2)-net.
+    for sampler in ["sobol", "pmj02"] {
+        let mut csv = Vec::new();
+        let args = ["--sampler", sampler, "--n", "256"];
+        points::main_with(args.map(OsString::from), &mut csv).unwrap();
+        assert_eq!(field(&ok(&[], &csv), "t_value"), "0", "{sampler}");
+    }
+    let column = ok(&[], b"0.1,0.1\n0.1,0.3\n0.1,0.6\n0.1,0.9\n");
+    assert_eq!(field(&column, "t_value"), "2");
+    let random = ["--sampler", "random", "--n", "64"];
+    let mut csv = Vec::new();
+    points::main_with(random.map(OsString::from), &mut csv).unwrap();
+    assert_eq!(field(&ok(&[], &csv), "is_latin"), "false");
+}
+
+#[test]
+fn a_file_argument_and_its_io_failure() {
+    let path = std::env::temp_dir().join(format!("wellspread-metrics-{}.csv", std::process::id()));
+    std::fs::write(&path, "0.5,0.5\n0.25,0.75\n").unwrap();
+    let from_file = ok(&[path.to_str().unwrap()], b"ignored");
+    std::fs::remove_file(&path).unwrap();
+    assert_eq!(from_file, ok(&[], b"0.5,0.5\n0.25,0.75\n"));
+    let (status, out, err) = run(&["/nonexistent-dir/points.csv"], b"");
+    assert_eq!((status, out.as_str()), (1, ""));
+    assert!(
+        err.starts_with("metrics: cannot read /nonexistent-dir/points.csv: "),
+        "{err}"
+    );
+}
+
+#[test]
+fn bad_arguments_are_one_line_errors_with_status_2() {
+    let four = b"0.1,0.1\n0.6,0.1\n0.1,0.6\n0.6,0.6\n";
+    let cases: &[(&[&str], &str)] = &[
+        (&["--stratified", "8"], "\"8\" is not a grid MxK"),
+        (&["--stratified=0x4"], "\"0x4\" is not a grid MxK"),
+        (
+            &["--stratified", "3x1"],
+            "--stratified 3x1: its 3 cells do not divide n = 4",
+        ),
+        (&["--stratified"], "--stratified <MxK>"),
+        (&["--bogus"], "'--bogus'"),
+        (&["a.csv", "b.csv"], "'b.csv'"),
+    ];
+    for &(args, expected) in cases {
+        let (status, out, err) = run(args, four);
+        assert_eq!((status, out.as_str()), (2, ""), "{args:?}: {err}");
+        assert!(
+            err.contains(expected),
+            "{args:?}: {err:?} lacks {expected:?}"
+        );
+        assert_eq!(err.lines().count(), 1, "{err:?}");
+    }
+    assert_eq!(
+        field(&ok(&["--stratified", "2X2"], four), "is_stratified"),
+        "true"
+    );
+}
+
+#[test]
+fn help_lists_the_options_the_formats_and_the_exit_codes() {
+    for args in [&["--help"][..], &["-h"]] {
+        let (status, help, err) = run(args, b"");
+        assert_eq!((status, err.as_str()), (0, ""));
+        for needle in [
+            "--stratified",
+            "[FILE]",
+            "Input:",
+            "byte-order mark",
+            "Output:",
+            "null",
+            "Exit status",
+            " 2 ",
+            " 1 ",
+        ] {
+            assert!(help.contains(needle), "{args:?} lacks {needle:?}:\n{help}");
+        }
+        if args == ["--help"] {
+            for name in ALL_FIELDS.iter().chain(&["is_stratified"]) {
+                assert!(help.contains(&format!("`{name}`")), "{name}");
+            }
+        }
+    }
+}
