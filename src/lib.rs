@@ -53,6 +53,7 @@ pub use glam;
 mod error;
 #[cfg(feature = "alloc")]
 pub mod metrics;
+mod pixel;
 pub mod primitives;
 mod sampler;
 mod samplers;
@@ -67,12 +68,13 @@ pub mod hash {
     };
 }
 
-pub use error::Error;
+pub use error::{Error, InputText};
+pub use pixel::{Padded, PixelCursor, PixelSampler};
 pub use primitives::pattern_seed;
 pub use sampler::Sampler2D;
 pub use samplers::{
     AnySampler, CorrelatedMultiJittered, Halton, Hammersley, Jittered, LatinHypercube,
-    MultiJittered, NRooks, Pmj02, Random, Regular, SamplerKind, Sobol, UnknownSampler,
+    MultiJittered, NRooks, Pmj02, Random, Regular, SamplerKind, Sobol, ZSobol,
 };
 
 // The README's usage example runs as a doctest.
