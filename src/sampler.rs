@@ -89,3 +89,14 @@ pub(crate) fn check_fill_len(requested: usize, len: u32) {
         "fill asked for {requested} samples of a set of {len}"
     );
 }
+
+/// The panic every `fill_from` shares: indices `start..start + requested`
+/// must lie in the sequence's `0..2^32`, which never wraps around.
+#[inline]
+pub(crate) fn check_fill_from(start: u32, requested: usize) {
+    assert!(
+        u64::from(start) + requested as u64 <= 1 << 32,
+        "fill_from asked for indices {start}..{} past the sequence's last index 4294967295",
+        u64::from(start) + requested as u64
+    );
+}

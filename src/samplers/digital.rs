@@ -57,22 +57,26 @@ pub(crate) const fn bits_to_point((x, y): (u32, u32)) -> Vec2 {
 /// Points per batch in [`fill_in_lanes`].
 const LANES: usize = 8;
 
-/// `fill` for sequences whose point is `bits_to_point(point_bits(index,
-/// seeds))`, in batches of [`LANES`] independent indices. Every step of a
-/// point is a 32-bit integer operation on its own lane (multiplies, shifts,
-/// masks, bit reversals), so the compiler can run a batch in SIMD
-/// registers; on x86-64 with only SSE2 this is about a third faster than
-/// one point at a time. The values are exactly those of `sample`, which
-/// calls the same `point_bits`.
+/// `fill` (and `fill_from`) for sequences whose point is
+/// `bits_to_point(point_bits(index, seeds))`: writes indices
+/// `start..start + out.len()` in batches of [`LANES`] independent indices.
+/// Every step of a point is a 32-bit integer operation on its own lane
+/// (multiplies, shifts, masks, bit reversals), so the compiler can run a
+/// batch in SIMD registers. The values are exactly those of `sample`,
+/// which calls the same `point_bits`.
 #[inline(always)]
 pub(crate) fn fill_in_lanes(
     out: &mut [Vec2],
+    start: u32,
     seeds: OwenSeeds,
     point_bits: impl Fn(u32, OwenSeeds) -> (u32, u32),
 ) {
-    // Callers check `out.len() <= n <= u32::MAX`, so indices fit in u32.
+    // Callers check `start + out.len() <= 2^32`, so every index fits in
+    // u32; only the base after the last full batch may reach 2^32, and it
+    // is then not used.
+    debug_assert!(u64::from(start) + out.len() as u64 <= 1 << 32);
     let mut chunks = out.chunks_exact_mut(LANES);
-    let mut base = 0u32;
+    let mut base = start;
     for chunk in &mut chunks {
         let mut x = [0u32; LANES];
         let mut y = [0u32; LANES];
@@ -82,10 +86,10 @@ pub(crate) fn fill_in_lanes(
         for ((point, &x), &y) in chunk.iter_mut().zip(&x).zip(&y) {
             *point = bits_to_point((x, y));
         }
-        base += LANES as u32;
+        base = base.wrapping_add(LANES as u32);
     }
-    for (index, point) in (base..).zip(chunks.into_remainder()) {
-        *point = bits_to_point(point_bits(index, seeds));
+    for (offset, point) in (0..).zip(chunks.into_remainder()) {
+        *point = bits_to_point(point_bits(base + offset, seeds));
     }
 }
 
