@@ -597,6 +597,16 @@ fn run_scene(
     Ok(rows)
 }
 
+/// An error for a table cell: five decimals, or three significant figures
+/// in scientific notation below 0.001 (the resolved scene at high counts).
+fn format_error(value: f64) -> String {
+    if value >= 1e-3 || value == 0.0 {
+        format!("{value:.5}")
+    } else {
+        format!("{value:.2e}")
+    }
+}
+
 /// Milliseconds with three significant figures, for table cells.
 fn format_ms(seconds: f64) -> String {
     let ms = seconds * 1e3;
@@ -647,9 +657,9 @@ fn markdown_tables(options: &Options, rows: &[Row]) -> String {
                     Some(r) => {
                         let _ = write!(
                             line,
-                            " {:.5} / {:.5} ({}) |",
-                            r.rmse,
-                            r.blurred_rmse,
+                            " {} / {} ({}) |",
+                            format_error(r.rmse),
+                            format_error(r.blurred_rmse),
                             format_ms(r.seconds)
                         );
                     }
@@ -847,8 +857,8 @@ fn docs_block(tables: &str) -> String {
     )
 }
 
-/// The `--docs` page: `existing` with its generated block replaced, or a
-/// new page when it has none.
+/// The `--docs` page: `existing` with its generated block replaced, or
+/// with the block appended when it has none (a new page when empty).
 fn docs_page_from(existing: &str, tables: &str) -> String {
     let block = docs_block(tables);
     match (existing.find(DOCS_BEGIN), existing.find(DOCS_END)) {
@@ -857,7 +867,9 @@ fn docs_page_from(existing: &str, tables: &str) -> String {
             &existing[..begin],
             existing[end + DOCS_END.len()..].trim_start_matches('\n')
         ),
-        _ => format!("# Tracer measurements\n\n{block}"),
+        _ if existing.trim().is_empty() => format!("# Tracer measurements\n\n{block}"),
+        // A page of prose with no block yet: the block goes at its end.
+        _ => format!("{}\n\n{block}", existing.trim_end()),
     }
 }
 
@@ -1035,6 +1047,8 @@ mod tests {
         assert!(updated.contains("NEW") && !updated.contains("old"));
         assert!(updated.ends_with("prose after\n"));
         assert!(updated.contains("cargo run --release --example tracer"));
+        let appended = docs_page_from("# Prose\n\ntext\n", "T");
+        assert!(appended.starts_with("# Prose\n\ntext\n\n") && appended.contains(DOCS_END));
     }
 
     #[test]

@@ -46,14 +46,14 @@ impl SceneKind {
         }
     }
 
-    /// The film sizes (width, height) the default run renders. Sampling
-    /// costs 10 to 80 ns per sample, so the default run (every sampler,
-    /// 1 + 4 + 16 + 64 + 256 = 341 samples per pixel) is about 12 M samples
-    /// per sampler at 192 x 192. Six samplers took 16 s of CPU time, so ten
-    /// need about 15 s of wall time on two idle cores and still fit in a
-    /// minute on two cores shared with other work. The polygon is shown at
-    /// 5 x 7, where one pixel is a large fraction of the shape, and at
-    /// 64 x 64, where the staircase along its edges is plain.
+    /// The film sizes (width, height) the default run renders. The default
+    /// run (eleven samplers, 1 + 4 + 16 + 64 + 256 = 341 samples per pixel)
+    /// shades about 12.6 M samples per sampler and scene at 192 x 192; the
+    /// whole run is about 45 CPU seconds on the machine of
+    /// `docs/tracer.md`, so it fits in well under a minute on two cores.
+    /// The polygon is shown at 5 x 7, where one pixel is a large fraction
+    /// of the shape, and at 64 x 64, where the staircase along its edges is
+    /// plain.
     pub fn default_sizes(self) -> &'static [(u32, u32)] {
         match self {
             SceneKind::Checker | SceneKind::Moire | SceneKind::MoireResolved => &[(192, 192)],
