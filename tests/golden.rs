@@ -369,9 +369,11 @@ fn hash_primitives_are_pinned() {
 
 /// `ZSobol` (a `PixelSampler`, so not in the table above): samples 0..8 of
 /// one pixel and dimension pair, as `[x bits, y bits]`.
+/// (spp, resolution, seed, pixel, dimension, samples as `[x bits, y bits]`).
+type ZSobolCase = (u32, [u32; 2], u32, [u32; 2], u32, [[u32; 2]; 8]);
+
 #[rustfmt::skip]
-const ZSOBOL_GOLDEN: &[(u32, [u32; 2], u32, [u32; 2], u32, [[u32; 2]; 8])] = &[
-    // (spp, resolution, seed, pixel, dimension, samples)
+const ZSOBOL_GOLDEN: &[ZSobolCase] = &[
     (16, [64, 48], 0x0, [5, 9], 0, [
         [0x3c316000, 0x3f3a2ed1], // (0.010826111, 0.72727686)
         [0x3f24b54e, 0x3e97ef0e], // (0.6433915, 0.29674572)

@@ -103,6 +103,9 @@ fn correlation(pairs: &[(f32, f32)]) -> f64 {
     sab / (saa * sbb).sqrt()
 }
 
+/// Picks two coordinates out of a sample's two dimension pairs.
+type Pairing = fn(&(Vec2, Vec2)) -> (f32, f32);
+
 /// The worst chi-square and |correlation| over the coordinate pairings
 /// (a.x, b.x), (a.y, b.y), (a.x, b.y), (a.y, b.x) of dimension pairs `a`
 /// and `b`, over every sample of a 32 x 32 film at 16 spp (16384 samples).
@@ -118,7 +121,7 @@ fn dependence(sampler: &impl PixelSampler, a: u32, b: u32) -> (f64, f64) {
             }
         }
     }
-    let pairings: [fn(&(Vec2, Vec2)) -> (f32, f32); 4] = [
+    let pairings: [Pairing; 4] = [
         |(p, q)| (p.x, q.x),
         |(p, q)| (p.y, q.y),
         |(p, q)| (p.x, q.y),
