@@ -368,7 +368,9 @@ fn hash_primitives_are_pinned() {
 }
 
 /// `ZSobol` (a `PixelSampler`, so not in the table above): samples 0..8 of
-/// one pixel and dimension pair, as `[x bits, y bits]`.
+/// one pixel and dimension pair, as `[x bits, y bits]`, at an even and an
+/// odd log2(spp). Cross-checked against an independent Python
+/// transcription of the algorithm in `ZSobol`'s docs.
 /// (spp, resolution, seed, pixel, dimension, samples as `[x bits, y bits]`).
 type ZSobolCase = (u32, [u32; 2], u32, [u32; 2], u32, [[u32; 2]; 8]);
 

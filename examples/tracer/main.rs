@@ -998,6 +998,20 @@ mod tests {
         }
     }
 
+    #[test]
+    fn bad_output_paths_fail_before_rendering() {
+        let out = std::env::temp_dir().join(format!("tracer-test-{}", std::process::id()));
+        let mut options = run_options(&["--scene", "polygon", "--spp", "1", "--size", "4"]);
+        options.out = out.clone();
+        // A report "inside" a regular file cannot be created.
+        options.report = Some(PathBuf::from("Cargo.toml/report.json"));
+        let message = run(&options).unwrap_err();
+        assert!(message.contains("Cargo.toml"), "{message}");
+        // Nothing was rendered: the scene's directory does not exist.
+        assert!(!out.join("polygon-4x4-box").exists());
+        let _ = fs::remove_dir_all(&out);
+    }
+
     fn row(sampler: TracerSampler, spp: u32, rmse: f64) -> Row {
         Row {
             scene: SceneKind::Moire,
