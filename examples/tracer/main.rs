@@ -50,6 +50,9 @@ Output, under --out (default out/), per scene as <scene>-<W>x<H>-<filter>/:
   <sampler>-<spp>spp.png     each frame (the first seed's)
   contact-<spp>spp.png       the reference and every sampler, cropped to
                              where the scene aliases, labelled with RMSE
+  error-<spp>spp.png         each sampler's error image (frame - reference),
+                             same crop, grey = 0, black/white = -/+ 4x the
+                             smallest RMSE in the sheet
   error-spectrum-<spp>spp.svg radially averaged periodogram of the error
                              image (frame - reference), one line per sampler,
                              low frequencies on the left, averaged over seeds
@@ -560,6 +563,25 @@ fn run_scene(
         contact_sheet(&tiles, crop, crop_zoom)
             .write_png(&path)
             .map_err(|e| io_error(&path, e))?;
+        // The error images, same crop, on one scale: mid grey is no error
+        // and black / white are -/+ 4 times the smallest RMSE in the sheet.
+        let smallest = frames.iter().map(|f| f.rmse).fold(f64::INFINITY, f64::min);
+        let errors: Vec<Image> = frames
+            .iter()
+            .map(|f| error_image(&f.image, &reference, 4.0 * smallest))
+            .collect();
+        let error_tiles: Vec<Tile<'_>> = frames
+            .iter()
+            .zip(&errors)
+            .map(|(f, image)| Tile {
+                image,
+                label: vec![f.sampler.name().into(), format!("{spp} spp error")],
+            })
+            .collect();
+        let path = dir.join(format!("error-{spp}spp.png"));
+        contact_sheet(&error_tiles, crop, crop_zoom)
+            .write_png(&path)
+            .map_err(|e| io_error(&path, e))?;
         let series: Vec<(&str, Vec<f64>)> = frames
             .iter()
             .map(|f| (f.sampler.name(), f.spectrum.clone()))
@@ -595,6 +617,39 @@ fn run_scene(
     }
     progress.note(&format!("{label}: wrote {}", dir.display()));
     Ok(rows)
+}
+
+/// `frame - reference` as a picture: linear 1/2 where they agree, 0 and 1
+/// at `-range` and `+range` (clamped), on the sRGB curve's inverse so the
+/// display shows the error linearly.
+fn error_image(frame: &Image, reference: &Image, range: f64) -> Image {
+    let range = if range > 0.0 { range } else { 1.0 };
+    let pixels = frame
+        .pixels
+        .iter()
+        .zip(&reference.pixels)
+        .map(|(a, b)| {
+            std::array::from_fn(|c| {
+                let shown =
+                    (0.5 + 0.5 * (f64::from(a[c]) - f64::from(b[c])) / range).clamp(0.0, 1.0);
+                srgb_to_linear(shown) as f32
+            })
+        })
+        .collect();
+    Image {
+        width: frame.width,
+        height: frame.height,
+        pixels,
+    }
+}
+
+/// The inverse of the sRGB encoding `Picture` applies.
+fn srgb_to_linear(encoded: f64) -> f64 {
+    if encoded <= 0.040_45 {
+        encoded / 12.92
+    } else {
+        ((encoded + 0.055) / 1.055).powf(2.4)
+    }
 }
 
 /// An error for a table cell: five decimals, or three significant figures
