@@ -37,7 +37,9 @@ pub trait Sampler2D {
     /// returns for a larger index, and it is always a point in `[0, 1)^2`.
     /// The progressive sequences ([`Sobol`](crate::Sobol),
     /// [`Pmj02`](crate::Pmj02), [`Halton`](crate::Halton)) accept every
-    /// `u32` index: their `len` is only the set size `fill` and the tools use.
+    /// `u32` index: their `len` is only the set size `fill` and the tools use;
+    /// their `unbounded()` constructors take no size, and their `fill_from`
+    /// writes any run of indices (progressive rendering).
     fn sample(&self, index: u32, pattern: u32) -> Vec2;
 
     /// Writes samples `0..out.len()` of pattern `pattern` into `out`: exactly

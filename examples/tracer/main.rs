@@ -58,8 +58,10 @@ Output, under --out (default out/), per scene as <scene>-<W>x<H>-<filter>/:
                              low frequencies on the left, averaged over seeds
   trade.svg                  RMSE against seconds per frame, log-log
 The markdown tables go to stdout; --report writes the rows as JSON
-(scene, sampler, spp, rmse, blurred_rmse, seconds, seeds, width, height) and
---docs the tables as a markdown page headed by the command and machine.
+(scene, sampler, spp, rmse, blurred_rmse, low_frequency_power, seconds,
+seeds, width, height) and --docs the tables as a markdown page headed by the
+command and machine (on a page that has them, only the text between the
+tracer's markers is replaced).
 With --seeds K, rmse and blurred_rmse are root-mean-square over the K seeds.
 
 Exit status: 0 success, 2 bad command line, 1 I/O error (output paths are

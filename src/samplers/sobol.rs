@@ -28,6 +28,7 @@ use crate::samplers::digital::{OwenSeeds, bits_to_point, fill_in_lanes, scramble
 /// ([`pattern_seed`](crate::primitives::pattern_seed)): the independent index
 /// shuffle is what decorrelates pairs (Burley's "padding"), since two
 /// pairs then see unrelated points of the sequence at the same `index`.
+/// [`Padded`](crate::Padded) does this for a whole image.
 ///
 /// # Properties
 ///
