@@ -186,3 +186,49 @@ fn cursor_walks_the_dimension_pairs_in_order() {
         assert_eq!(cursor.next_2d(), zsobol.sample_pixel([5, 9], 6, dimension));
     }
 }
+
+/// The error of each 2 x 2 quad's mean estimate of a smooth integrand,
+/// the same in every pixel, root-mean-square over the quads of a 64 x 64
+/// film: what a blur keeps of the per-pixel error.
+fn quad_error(sampler: &impl PixelSampler) -> f64 {
+    // exp(-x^2 - y^2) over [0, 1)^2 (Christensen et al. 2018's Gaussian).
+    let exact = 0.557_746_285_351_033_f64;
+    let spp = sampler.samples_per_pixel();
+    let mut sum_squares = 0.0;
+    for qy in 0..32 {
+        for qx in 0..32 {
+            let mut sum = 0.0;
+            for [dx, dy] in [[0, 0], [1, 0], [0, 1], [1, 1]] {
+                for i in 0..spp {
+                    let p = sampler.sample_pixel([2 * qx + dx, 2 * qy + dy], i, 0);
+                    sum += (-(p.x * p.x + p.y * p.y) as f64).exp();
+                }
+            }
+            let error = sum / f64::from(4 * spp) - exact;
+            sum_squares += error * error;
+        }
+    }
+    (sum_squares / 1024.0).sqrt()
+}
+
+/// Where neighbouring pixels integrate the same smooth function, the four
+/// pixels of a zsobol quad hold one (0, m+2, 2)-net and their errors
+/// cancel: the quad mean's error is that of 4 spp points of one net, about
+/// (4 spp)^-1.5, while independent per-pixel patterns only average four
+/// errors of spp^-1.5, halving it: a ratio of about 2 x 4^-1.5 = 0.25
+/// (measured 0.15 to 0.38 over the cases below). The test asks for below
+/// 0.5 over 1024 quads; each seed's samples are fixed, so it is
+/// deterministic.
+#[test]
+fn zsobol_quads_cancel_errors_on_a_smooth_integrand() {
+    for spp in [4, 16] {
+        for seed in [0, 1] {
+            let z = quad_error(&ZSobol::new(spp, [64, 64], seed).unwrap());
+            let s = quad_error(&Padded::new(Sobol::new(spp).unwrap(), seed));
+            assert!(
+                z < 0.5 * s,
+                "spp {spp} seed {seed}: zsobol {z:.3e} sobol {s:.3e}"
+            );
+        }
+    }
+}
