@@ -201,7 +201,7 @@ pub fn report(points: &[Vec2], grid: Option<(u32, u32)>) -> Result<String, Strin
     ];
     if let Some((columns, rows)) = grid {
         let cells = u64::from(columns) * u64::from(rows);
-        if points.len() as u64 % cells != 0 {
+        if !(points.len() as u64).is_multiple_of(cells) {
             return Err(format!(
                 "--stratified {columns}x{rows}: its {cells} cells do not divide n = {}",
                 points.len()

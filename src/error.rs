@@ -95,6 +95,104 @@ pub enum Error {
         /// The largest value accepted.
         max: u32,
     },
+    /// A name that is not a sampler's ([`SamplerKind::from_str`](core::str::FromStr)).
+    UnknownSampler {
+        /// The name given (its first [`InputText::CAPACITY`] bytes).
+        name: InputText,
+    },
+    /// [`ZSobol`](crate::ZSobol) was asked for a number of samples per
+    /// pixel that is not a power of two.
+    SamplesNotPowerOfTwo {
+        /// Samples per pixel asked for.
+        samples_per_pixel: u32,
+    },
+    /// [`ZSobol`](crate::ZSobol)'s index space, the resolution rounded up
+    /// to a power-of-two square times the samples per pixel, exceeds the
+    /// `2^32` indices of the sequence.
+    IndexSpaceTooLarge {
+        /// The film size, `[width, height]`.
+        resolution: [u32; 2],
+        /// Samples per pixel asked for.
+        samples_per_pixel: u32,
+        /// Bits the index space needs (at most 32 are available).
+        index_bits: u32,
+    },
+}
+
+/// A short copy of text a caller passed in (a sampler name), carried inside
+/// [`Error`] so that `Error` stays `Copy` and needs no allocator: the first
+/// [`CAPACITY`](Self::CAPACITY) bytes, cut at a character boundary.
+///
+/// ```
+/// use wellspread::{Error, SamplerKind};
+/// let Err(Error::UnknownSampler { name }) = "jitterd".parse::<SamplerKind>() else {
+///     unreachable!()
+/// };
+/// assert_eq!(name.as_str(), "jitterd");
+/// assert!(!name.is_truncated());
+/// ```
+#[derive(Clone, Copy, PartialEq, Eq, Hash)]
+pub struct InputText {
+    bytes: [u8; InputText::CAPACITY],
+    len: u8,
+    truncated: bool,
+}
+
+impl InputText {
+    /// Bytes kept: longer than every sampler name, short enough that an
+    /// `Error` stays a few words.
+    pub const CAPACITY: usize = 40;
+
+    /// The first [`CAPACITY`](Self::CAPACITY) bytes of `text`, cut back to
+    /// a character boundary.
+    #[must_use]
+    pub fn new(text: &str) -> Self {
+        let mut len = text.len().min(Self::CAPACITY);
+        while !text.is_char_boundary(len) {
+            len -= 1;
+        }
+        let mut bytes = [0; Self::CAPACITY];
+        bytes[..len].copy_from_slice(&text.as_bytes()[..len]);
+        Self {
+            bytes,
+            // len <= CAPACITY < 256.
+            len: len as u8,
+            truncated: len < text.len(),
+        }
+    }
+
+    /// The text kept.
+    #[must_use]
+    pub fn as_str(&self) -> &str {
+        // `new` cut at a character boundary, so this never fails.
+        core::str::from_utf8(&self.bytes[..usize::from(self.len)]).unwrap_or("")
+    }
+
+    /// `true` if the original text was longer than what is kept.
+    #[must_use]
+    pub const fn is_truncated(&self) -> bool {
+        self.truncated
+    }
+}
+
+impl fmt::Debug for InputText {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Debug::fmt(self.as_str(), f)?;
+        if self.truncated {
+            f.write_str("...")?;
+        }
+        Ok(())
+    }
+}
+
+impl fmt::Display for InputText {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.as_str())?;
+        if self.truncated {
+            f.write_str("...")?;
+        }
+        Ok(())
+    }
 }
 
 impl fmt::Display for Error {
@@ -162,6 +260,46 @@ impl fmt::Display for Error {
                 "a power spectrum needs a largest frequency from 1 to {max}, \
                  got {max_frequency}"
             ),
+            Error::UnknownSampler { name } => {
+                write!(f, "unknown sampler \"{name}\"; expected one of:")?;
+                for kind in SamplerKind::ALL {
+                    write!(f, " {kind}")?;
+                }
+                Ok(())
+            }
+            Error::SamplesNotPowerOfTwo { samples_per_pixel } => {
+                let above = u64::from(samples_per_pixel).next_power_of_two();
+                write!(
+                    f,
+                    "zsobol needs a power-of-two number of samples per pixel (1, 2, 4, 8, ...), \
+                     got {samples_per_pixel}; use {} or {above}",
+                    above / 2
+                )
+            }
+            Error::IndexSpaceTooLarge {
+                resolution: [width, height],
+                samples_per_pixel,
+                index_bits,
+            } => {
+                write!(
+                    f,
+                    "zsobol at {samples_per_pixel} samples per pixel on a {width} x {height} \
+                     film needs 2^{index_bits} sequence indices (the film rounded up to a \
+                     power-of-two square, times the samples per pixel), more than the 2^32 \
+                     available; "
+                )?;
+                let film_bits = index_bits - samples_per_pixel.trailing_zeros();
+                if film_bits <= 32 {
+                    write!(
+                        f,
+                        "use at most {} samples per pixel per pass and average passes \
+                         with different seeds",
+                        1u64 << (32 - film_bits)
+                    )
+                } else {
+                    f.write_str("render films of at most 65536 pixels on a side")
+                }
+            }
         }
     }
 }

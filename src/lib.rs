@@ -28,6 +28,68 @@
 //! # Ok::<(), wellspread::Error>(())
 //! ```
 //!
+//! # Pixel loops
+//!
+//! A renderer asks for samples by pixel, sample index and dimension pair
+//! (film position, lens, time, light, ...): that is [`PixelSampler`].
+//! [`Padded`] makes one of any [`Sampler2D`] (each pixel and dimension pair
+//! an independent pattern from [`pattern_seed`]), and [`ZSobol`] spreads
+//! the error across pixels as blue noise. A [`PixelCursor`] hands out the
+//! dimension pairs in order, like pbrt's `StartPixelSample` / `Get2D`:
+//!
+//! ```
+//! use wellspread::{Padded, PixelSampler, Sobol, ZSobol};
+//!
+//! /// Box-filtered render of a toy scene seen through a lens, lit by an
+//! /// area light: three dimension pairs per sample.
+//! fn render(sampler: &impl PixelSampler, width: u32, height: u32) -> Vec<f32> {
+//!     let spp = sampler.samples_per_pixel();
+//!     let mut image = Vec::with_capacity((width * height) as usize);
+//!     for py in 0..height {
+//!         for px in 0..width {
+//!             let mut sum = 0.0;
+//!             for index in 0..spp {
+//!                 let mut cursor = sampler.cursor([px, py], index);
+//!                 let film = cursor.next_2d(); // pair 0: offset in the pixel
+//!                 let lens = cursor.next_2d(); // pair 1: point on the lens
+//!                 let light = cursor.next_2d(); // pair 2: point on the light
+//!                 let (x, y) = (px as f32 + film.x, py as f32 + film.y);
+//!                 let blur = 0.5 * (lens.x - 0.5);
+//!                 sum += ((x + blur) * 0.3).sin().abs() * (y * 0.2).cos().abs() * (0.5 + light.y);
+//!             }
+//!             image.push(sum / spp as f32);
+//!         }
+//!     }
+//!     image
+//! }
+//!
+//! let (width, height) = (32, 24);
+//! let blue = render(&ZSobol::new(16, [width, height], 0)?, width, height);
+//! let white = render(&Padded::new(Sobol::new(16)?, 0), width, height);
+//! assert_eq!(blue.len(), white.len());
+//! # Ok::<(), wellspread::Error>(())
+//! ```
+//!
+//! # glam, and renderers on other math crates
+//!
+//! Points are [`glam::Vec2`]. glam is re-exported as [`wellspread::glam`](glam):
+//! name the type through that path and the versions always match. Each
+//! wellspread release depends on one glam minor version (now 0.30); moving
+//! to a newer one is a breaking change of wellspread, released as a new
+//! minor version before 1.0 and listed in the CHANGELOG.
+//!
+//! A renderer on another math crate needs no glam in its own code: every
+//! point converts to a plain `[f32; 2]`.
+//!
+//! ```
+//! use wellspread::{Sampler2D, Sobol};
+//! let sobol = Sobol::new(16)?;
+//! let [x, y] = sobol.sample(3, 7).to_array();
+//! let offset: [f32; 2] = sobol.sample(4, 7).into();
+//! assert!(x < 1.0 && y < 1.0 && offset[0] < 1.0);
+//! # Ok::<(), wellspread::Error>(())
+//! ```
+//!
 //! # Features
 //!
 //! - `std` (default): the standard library; implies `alloc`.
@@ -35,6 +97,8 @@
 //! - `rayon` (off): runs the quadratic metric (the wrap-around L2
 //!   discrepancy) on rayon's thread pool; results do not depend on the
 //!   thread count.
+//! - `serde` (off): `Serialize` / `Deserialize` for [`SamplerKind`], as its
+//!   kebab-case name (`"n-rooks"`), so settings files can name a sampler.
 //!
 //! With neither, the crate is `no_std` and the samplers and hashes still
 //! work. No feature changes a sample value.
@@ -55,6 +119,7 @@ pub use glam;
 mod error;
 #[cfg(feature = "alloc")]
 pub mod metrics;
+mod pixel;
 pub mod primitives;
 mod sampler;
 mod samplers;
@@ -70,12 +135,13 @@ pub mod hash {
     };
 }
 
-pub use error::Error;
+pub use error::{Error, InputText};
+pub use pixel::{Padded, PixelCursor, PixelSampler};
 pub use primitives::pattern_seed;
 pub use sampler::Sampler2D;
 pub use samplers::{
     AnySampler, CorrelatedMultiJittered, Halton, Hammersley, Jittered, LatinHypercube,
-    MultiJittered, NRooks, Pmj02, Random, Regular, SamplerKind, Sobol, UnknownSampler,
+    MultiJittered, NRooks, Pmj02, Random, Regular, SamplerKind, Sobol, ZSobol,
 };
 
 // The README's usage example runs as a doctest.

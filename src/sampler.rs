@@ -39,7 +39,9 @@ pub trait Sampler2D {
     /// returns for a larger index, and it is always a point in `[0, 1)^2`.
     /// The progressive sequences ([`Sobol`](crate::Sobol),
     /// [`Pmj02`](crate::Pmj02), [`Halton`](crate::Halton)) accept every
-    /// `u32` index: their `len` is only the set size `fill` and the tools use.
+    /// `u32` index: their `len` is only the set size `fill` and the tools use;
+    /// their `unbounded()` constructors take no size, and their `fill_from`
+    /// writes any run of indices (progressive rendering).
     fn sample(&self, index: u32, pattern: u32) -> Vec2;
 
     /// Writes samples `0..out.len()` of pattern `pattern` into `out`: exactly
@@ -97,5 +99,16 @@ pub(crate) fn check_fill_len(requested: usize, len: u32) {
     assert!(
         requested <= len as usize,
         "fill asked for {requested} samples of a set of {len}"
+    );
+}
+
+/// The panic every `fill_from` shares: indices `start..start + requested`
+/// must lie in the sequence's `0..2^32`, which never wraps around.
+#[inline]
+pub(crate) fn check_fill_from(start: u32, requested: usize) {
+    assert!(
+        u64::from(start) + requested as u64 <= 1 << 32,
+        "fill_from asked for indices {start}..{} past the sequence's last index 4294967295",
+        u64::from(start) + requested as u64
     );
 }

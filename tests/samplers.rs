@@ -25,7 +25,7 @@ use proptest::test_runner::TestCaseError;
 use wellspread::glam::Vec2;
 use wellspread::{
     AnySampler, CorrelatedMultiJittered, Error, Halton, Hammersley, Jittered, MultiJittered,
-    NRooks, Pmj02, Random, Regular, Sampler2D, SamplerKind, Sobol, UnknownSampler, metrics,
+    NRooks, Pmj02, Random, Regular, Sampler2D, SamplerKind, Sobol, metrics,
 };
 
 /// Where a point sits inside the finest stratum its sampler guarantees.
@@ -729,12 +729,60 @@ fn kinds_round_trip_through_their_names() {
         assert_eq!(kind.build(9).unwrap().kind(), kind);
     }
     for bad in ["", "Jittered", "jitter", "n_rooks", "multi-jittered "] {
-        assert_eq!(bad.parse::<SamplerKind>(), Err(UnknownSampler));
+        let Err(Error::UnknownSampler { name }) = bad.parse::<SamplerKind>() else {
+            panic!("{bad:?} parsed");
+        };
+        assert_eq!(name.as_str(), bad);
+        let message = Error::UnknownSampler { name }.to_string();
+        assert!(message.contains(&format!("\"{bad}\"")), "{message}");
+        for &kind in SamplerKind::ALL {
+            assert!(message.contains(kind.name()), "{message}");
+        }
     }
-    let message = UnknownSampler.to_string();
+    // A long input is kept to its first bytes, cut at a character
+    // boundary, and the message says it was cut.
+    let long = "é".repeat(30);
+    let Err(Error::UnknownSampler { name }) = long.parse::<SamplerKind>() else {
+        panic!("parsed");
+    };
+    assert!(name.is_truncated() && long.starts_with(name.as_str()));
+    assert_eq!(name.as_str().len(), 40);
+    assert!(
+        Error::UnknownSampler { name }
+            .to_string()
+            .contains("é...\"")
+    );
+}
+
+#[test]
+fn any_sampler_is_eq_and_hash() {
+    let set: std::collections::HashSet<AnySampler> = SamplerKind::ALL
+        .iter()
+        .flat_map(|kind| {
+            [
+                kind.build(16).unwrap(),
+                kind.build(16).unwrap(),
+                kind.build(25).unwrap(),
+            ]
+        })
+        .collect();
+    assert_eq!(set.len(), 2 * SamplerKind::ALL.len());
+}
+
+#[cfg(feature = "serde")]
+#[test]
+fn kinds_serialize_as_their_names() {
     for &kind in SamplerKind::ALL {
-        assert!(message.contains(kind.name()), "{message}");
+        let json = serde_json::to_string(&kind).unwrap();
+        assert_eq!(json, format!("\"{}\"", kind.name()));
+        assert_eq!(serde_json::from_str::<SamplerKind>(&json).unwrap(), kind);
     }
+    let error = serde_json::from_str::<SamplerKind>("\"sobel\"").unwrap_err();
+    assert!(
+        error.to_string().contains("unknown sampler \"sobel\""),
+        "{error}"
+    );
+    assert!(serde_json::from_str::<SamplerKind>("3").is_err());
 }
 
 // ---- Constructors and errors ----

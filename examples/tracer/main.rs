@@ -4,16 +4,18 @@
 //! ```sh
 //! cargo run --release --example tracer                       # everything
 //! cargo run --release --example tracer -- --scene moire --sampler regular,jittered --spp 16
+//! cargo run --release --example tracer -- --scene moire-resolved --sampler sobol,zsobol --spp 4,16 --seeds 16
 //! cargo run --release --example tracer -- --help
 //! ```
 //!
-//! For each scene, size, sampler and sample count it renders a frame, times
-//! it, and measures its RMSE against a reference image computed (or loaded
-//! from `out/`) with the same reconstruction filter. It writes every frame
-//! as a PNG, a labelled contact sheet per sample count, a log-log
-//! error-versus-time SVG per scene, prints the trade table in markdown, and
-//! with `--report` writes the rows as JSON.
+//! For each scene, size, sampler and sample count it renders a frame (or
+//! one per seed with `--seeds K`), times it, and measures its RMSE and its
+//! blurred RMSE against a reference image. Every sampler goes through the
+//! library's [`PixelSampler`](wellspread::PixelSampler): the library's
+//! samplers padded across pixels, and `zsobol`. See [`HELP`] for the files
+//! it writes.
 
+mod analysis;
 mod output;
 mod reference;
 mod render;
@@ -21,36 +23,49 @@ mod scenes;
 
 use std::fmt::Write as _;
 use std::fs;
+use std::io::IsTerminal as _;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
+use clap::Parser;
+use indicatif::{ProgressBar, ProgressStyle};
 use wellspread::SamplerKind;
 
-use crate::output::{Crop, Picture, Series, Tile, contact_sheet, trade_plot_svg, viewing_zoom};
-use crate::render::{Filter, Image, Patterns, render};
+use crate::analysis::{blurred_rmse, error_spectrum};
+use crate::output::{
+    Crop, Picture, Series, Tile, contact_sheet, spectrum_svg, trade_plot_svg, viewing_zoom,
+};
+use crate::render::{FILM_DIMENSION, Filter, Image, TracerSampler, render};
 use crate::scenes::SceneKind;
 
-const USAGE: &str = "\
-usage: tracer [--scene LIST] [--sampler LIST] [--spp LIST] [--size N|WxH]
-              [--filter box|gaussian|mitchell] [--seed N] [--target RMSE]
-              [--out DIR] [--report FILE.json]
+/// What the tracer writes and how it exits; shown under `--help`.
+const HELP: &str = "\
+Output, under --out (default out/), per scene as <scene>-<W>x<H>-<filter>/:
+  reference.png              the reference image every RMSE is measured
+                             against: what infinitely many samples would give
+                             under the same filter (exact or quadrature where
+                             the scene allows, else 4096 samples per pixel);
+                             cached as out/reference-*.bin
+  <sampler>-<spp>spp.png     each frame (the first seed's)
+  contact-<spp>spp.png       the reference and every sampler, cropped to
+                             where the scene aliases, labelled with RMSE
+  error-<spp>spp.png         each sampler's error image (frame - reference),
+                             same crop, grey = 0, black/white = -/+ 4x the
+                             smallest RMSE in the sheet
+  error-spectrum-<spp>spp.svg radially averaged periodogram of the error
+                             image (frame - reference), one line per sampler,
+                             low frequencies on the left, averaged over seeds
+  trade.svg                  RMSE against seconds per frame, log-log
+The markdown tables go to stdout; --report writes the rows as JSON
+(scene, sampler, spp, rmse, blurred_rmse, low_frequency_power, seconds,
+seeds, width, height) and --docs the tables as a markdown page headed by the
+command and machine (on a page that has them, only the text between the
+tracer's markers is replaced).
+With --seeds K, rmse and blurred_rmse are root-mean-square over the K seeds.
 
-Renders the aliasing scenes (checker, moire, polygon) with every sampler at
-several sample counts, measures RMSE against a cached reference, writes PNGs,
-contact sheets and error-vs-time plots under --out, and prints the trade table.
-
-  --scene LIST    comma-separated scenes (default: all)
-  --sampler LIST  comma-separated sampler names (default: all)
-  --spp LIST      comma-separated samples per pixel (default: 1,4,16,64,256)
-  --size N|WxH    film size for every scene (default: 192x192 for checker and
-                  moire; 5x7 and 64x64 for polygon)
-  --filter NAME   reconstruction filter: box (default), gaussian, mitchell
-  --seed N        pattern seed, the `frame` of pattern_seed (default: 0)
-  --target RMSE   error the \"to reach\" columns aim at (default: 0.01)
-  --out DIR       output directory (default: out/)
-  --report FILE   also write the rows as a JSON array to FILE
-  --help          this text";
+Exit status: 0 success, 2 bad command line, 1 I/O error (output paths are
+checked before rendering starts).";
 
 /// The default sample counts: powers of four, so every count is a square
 /// and each step should cut the error of a stratified pattern by at least 2.
@@ -60,126 +75,122 @@ const DEFAULT_SPP: [u32; 5] = [1, 4, 16, 64, 256];
 /// beyond which a single frame takes minutes anyway.
 const MAX_SPP: u32 = 1 << 24;
 const MAX_SIDE: u32 = 16_384;
+/// Most seeds per frame on the command line.
+const MAX_SEEDS: u32 = 1024;
+/// Bins of the radially averaged error spectrum.
+const SPECTRUM_BINS: usize = 48;
 
+/// Renders the aliasing scenes (checker, moire, moire-resolved, polygon)
+/// with every sampler at several sample counts, measures RMSE and blurred
+/// RMSE against a cached reference, writes PNGs, contact sheets,
+/// error spectra and error-vs-time plots, and prints the trade table.
+#[derive(Debug, Parser)]
+#[command(name = "tracer", after_help = HELP)]
+struct Cli {
+    /// Comma-separated scenes: checker, moire, moire-resolved, polygon
+    /// [default: all]
+    #[arg(long = "scene", value_name = "LIST", value_delimiter = ',', value_parser = parse_scene)]
+    scenes: Vec<SceneKind>,
+    /// Comma-separated samplers: regular, random, jittered, n-rooks,
+    /// multi-jittered, correlated-multi-jittered, hammersley, halton, sobol,
+    /// pmj02, zsobol [default: all]
+    #[arg(long = "sampler", value_name = "LIST", value_delimiter = ',', value_parser = parse_sampler)]
+    samplers: Vec<TracerSampler>,
+    /// Comma-separated samples per pixel, each in 1..=16777216
+    /// [default: 1,4,16,64,256]
+    #[arg(long = "spp", value_name = "LIST", value_delimiter = ',', value_parser = parse_spp)]
+    spps: Vec<u32>,
+    /// Film size for every scene, N or WxH, sides in 1..=16384 [default:
+    /// 192x192 for checker and the moires; 5x7 and 64x64 for polygon]
+    #[arg(long, value_name = "N|WxH", value_parser = parse_size)]
+    size: Option<(u32, u32)>,
+    /// Reconstruction filter: box, gaussian, mitchell
+    #[arg(long, value_name = "NAME", default_value = "box", value_parser = parse_filter)]
+    filter: Filter,
+    /// First frame seed (the `frame` of pattern_seed, ZSobol's seed)
+    #[arg(long, value_name = "N", default_value_t = 0)]
+    seed: u32,
+    /// Frames per row, with seeds seed..seed+K-1; errors are RMS over them
+    #[arg(long, value_name = "K", default_value_t = 1,
+          value_parser = clap::value_parser!(u32).range(1..=i64::from(MAX_SEEDS)))]
+    seeds: u32,
+    /// RMSE the "to reach" columns aim at (positive)
+    #[arg(long, value_name = "RMSE", default_value_t = 0.01, value_parser = parse_target)]
+    target: f64,
+    /// Output directory
+    #[arg(long, value_name = "DIR", default_value = "out")]
+    out: PathBuf,
+    /// Also write the rows as a JSON array to FILE
+    #[arg(long, value_name = "FILE")]
+    report: Option<PathBuf>,
+    /// Also write the tables as a markdown page to FILE, headed by the
+    /// command and the machine
+    #[arg(long, value_name = "FILE")]
+    docs: Option<PathBuf>,
+}
+
+/// The run, with defaults filled in and lists deduplicated.
 #[derive(Clone, Debug, PartialEq)]
 struct Options {
     scenes: Vec<SceneKind>,
-    samplers: Vec<SamplerKind>,
+    samplers: Vec<TracerSampler>,
     spps: Vec<u32>,
     size: Option<(u32, u32)>,
     filter: Filter,
     seed: u32,
+    seeds: u32,
     target: f64,
     out: PathBuf,
     report: Option<PathBuf>,
+    docs: Option<PathBuf>,
 }
 
-impl Default for Options {
-    fn default() -> Self {
-        Self {
-            scenes: SceneKind::ALL.to_vec(),
-            samplers: SamplerKind::ALL.to_vec(),
-            spps: DEFAULT_SPP.to_vec(),
-            size: None,
-            filter: Filter::Box,
-            seed: 0,
-            target: 0.01,
-            out: PathBuf::from("out"),
-            report: None,
-        }
-    }
+/// `items` without repeats, or `all` when `items` is empty.
+fn or_all<T: PartialEq>(items: Vec<T>, all: Vec<T>) -> Vec<T> {
+    if items.is_empty() { all } else { dedup(items) }
 }
 
-/// What the command line asked for: a run, or the help text.
-#[derive(Debug, PartialEq)]
-enum Command {
-    Run(Options),
-    Help,
-}
-
-/// Parses `--flag value` and `--flag=value` arguments. Errors are one line.
-fn parse_args(args: impl IntoIterator<Item = String>) -> Result<Command, String> {
-    let mut options = Options::default();
-    let mut args = args.into_iter();
-    while let Some(arg) = args.next() {
-        if arg == "--help" || arg == "-h" {
-            return Ok(Command::Help);
-        }
-        let (flag, inline_value) = match arg.split_once('=') {
-            Some((flag, value)) => (flag.to_owned(), Some(value.to_owned())),
-            None => (arg.clone(), None),
-        };
-        let known = [
-            "--scene",
-            "--sampler",
-            "--spp",
-            "--size",
-            "--filter",
-            "--seed",
-            "--target",
-            "--out",
-            "--report",
-        ];
-        if !known.contains(&flag.as_str()) {
-            return Err(format!("unknown argument {arg:?} (try --help)"));
-        }
-        let value = match inline_value {
-            Some(value) => value,
-            None => args
-                .next()
-                .ok_or_else(|| format!("{flag} needs a value (try --help)"))?,
-        };
-        match flag.as_str() {
-            "--scene" => options.scenes = parse_list(&flag, &value, |s| s.parse())?,
-            "--sampler" => {
-                options.samplers =
-                    parse_list(&flag, &value, |s| s.parse().map_err(|e| format!("{e}")))?;
-            }
-            "--spp" => {
-                let mut spps = parse_list(&flag, &value, |s| parse_count(s, MAX_SPP))?;
-                // Ascending, for the log-log interpolation between counts.
-                spps.sort_unstable();
-                options.spps = spps;
-            }
-            "--size" => options.size = Some(parse_size(&value)?),
-            "--filter" => options.filter = value.parse().map_err(|e| format!("--filter: {e}"))?,
-            "--seed" => {
-                options.seed = value.parse().map_err(|_| {
-                    format!("--seed: {value:?} is not an integer in 0..=4294967295")
-                })?;
-            }
-            "--target" => {
-                options.target = value
-                    .parse()
-                    .ok()
-                    .filter(|t: &f64| t.is_finite() && *t > 0.0)
-                    .ok_or_else(|| format!("--target: {value:?} is not a positive number"))?;
-            }
-            "--out" => options.out = PathBuf::from(value),
-            "--report" => options.report = Some(PathBuf::from(value)),
-            _ => unreachable!("checked against `known` above"),
-        }
-    }
-    Ok(Command::Run(options))
-}
-
-/// A comma-separated list, each item parsed by `item`, duplicates dropped.
-fn parse_list<T: PartialEq>(
-    flag: &str,
-    value: &str,
-    item: impl Fn(&str) -> Result<T, String>,
-) -> Result<Vec<T>, String> {
+fn dedup<T: PartialEq>(items: Vec<T>) -> Vec<T> {
     let mut list = Vec::new();
-    for part in value.split(',') {
-        if part.is_empty() {
-            return Err(format!("{flag}: empty item in {value:?}"));
-        }
-        let parsed = item(part).map_err(|e| format!("{flag}: {e}"))?;
-        if !list.contains(&parsed) {
-            list.push(parsed);
+    for item in items {
+        if !list.contains(&item) {
+            list.push(item);
         }
     }
-    Ok(list)
+    list
+}
+
+impl From<Cli> for Options {
+    fn from(cli: Cli) -> Self {
+        let mut spps = or_all(cli.spps, DEFAULT_SPP.to_vec());
+        // Ascending, for the log-log interpolation between counts.
+        spps.sort_unstable();
+        Self {
+            scenes: or_all(cli.scenes, SceneKind::ALL.to_vec()),
+            samplers: or_all(cli.samplers, TracerSampler::all()),
+            spps,
+            size: cli.size,
+            filter: cli.filter,
+            seed: cli.seed,
+            seeds: cli.seeds,
+            target: cli.target,
+            out: cli.out,
+            report: cli.report,
+            docs: cli.docs,
+        }
+    }
+}
+
+fn parse_scene(text: &str) -> Result<SceneKind, String> {
+    text.parse()
+}
+
+fn parse_sampler(text: &str) -> Result<TracerSampler, String> {
+    text.parse()
+}
+
+fn parse_filter(text: &str) -> Result<Filter, String> {
+    text.parse()
 }
 
 fn parse_count(text: &str, max: u32) -> Result<u32, String> {
@@ -189,22 +200,41 @@ fn parse_count(text: &str, max: u32) -> Result<u32, String> {
     }
 }
 
+fn parse_spp(text: &str) -> Result<u32, String> {
+    parse_count(text, MAX_SPP)
+}
+
 fn parse_size(text: &str) -> Result<(u32, u32), String> {
     let (w, h) = text.split_once('x').unwrap_or((text, text));
-    let side = |s| parse_count(s, MAX_SIDE).map_err(|e| format!("--size: {e} (use N or WxH)"));
+    let side = |s| parse_count(s, MAX_SIDE).map_err(|e| format!("{e} (use N or WxH)"));
     Ok((side(w)?, side(h)?))
 }
 
-/// One measured frame.
+fn parse_target(text: &str) -> Result<f64, String> {
+    text.parse()
+        .ok()
+        .filter(|t: &f64| t.is_finite() && *t > 0.0)
+        .ok_or_else(|| format!("{text:?} is not a positive number"))
+}
+
+/// One measured row: a scene, size, sampler and count, over `seeds` frames.
 #[derive(Clone, Debug)]
 struct Row {
     scene: SceneKind,
     width: u32,
     height: u32,
-    sampler: SamplerKind,
+    sampler: TracerSampler,
     spp: u32,
+    /// Root-mean-square over the seeds of each frame's RMSE.
     rmse: f64,
+    /// The same after the viewing blur ([`blurred_rmse`]).
+    blurred_rmse: f64,
+    /// Mean error power below 1/16 cycle per pixel, averaged over the
+    /// seeds ([`low_frequency_power`]).
+    low_power: f64,
+    /// Fastest time for the first seed's frame.
     seconds: f64,
+    seeds: u32,
 }
 
 /// The spp and seconds at which a sampler's error first reaches `target`,
@@ -255,6 +285,8 @@ fn crop_for(scene: SceneKind, width: u32, height: u32) -> Crop {
         // Just beyond the Nyquist contour, on the diagonal: where a regular
         // grid paints false rings and correlated patterns show structure.
         SceneKind::Moire => (0.3, 0.3, 0.375, 0.375),
+        // The middle of the resolved bands, where zsobol's error is blue.
+        SceneKind::MoireResolved => (0.3, 0.3, 0.375, 0.375),
         SceneKind::Polygon => (0.0, 0.0, 1.0, 1.0),
     };
     let fraction = |f: f64, n: u32| ((f * f64::from(n)) as u32).min(n - 1);
@@ -264,18 +296,49 @@ fn crop_for(scene: SceneKind, width: u32, height: u32) -> Crop {
     (x, y, w, h)
 }
 
+/// Where progress and notes go: an indicatif bar on stderr when stderr is
+/// a terminal, plain lines otherwise (logs, CI, pipes).
+struct Progress {
+    bar: Option<ProgressBar>,
+}
+
+impl Progress {
+    fn new(total: u64) -> Self {
+        let bar = std::io::stderr().is_terminal().then(|| {
+            let bar = ProgressBar::new(total);
+            if let Ok(style) =
+                ProgressStyle::with_template("{bar:40} {pos}/{len} frames, {elapsed} ({eta} left)")
+            {
+                bar.set_style(style);
+            }
+            bar
+        });
+        Self { bar }
+    }
+
+    fn note(&self, message: &str) {
+        match &self.bar {
+            Some(bar) => bar.println(format!("tracer: {message}")),
+            None => eprintln!("tracer: {message}"),
+        }
+    }
+
+    fn frame_done(&self) {
+        if let Some(bar) = &self.bar {
+            bar.inc(1);
+        }
+    }
+
+    fn finish(&self) {
+        if let Some(bar) = &self.bar {
+            bar.finish_and_clear();
+        }
+    }
+}
+
 fn main() -> ExitCode {
-    let options = match parse_args(std::env::args().skip(1)) {
-        Ok(Command::Run(options)) => options,
-        Ok(Command::Help) => {
-            println!("{USAGE}");
-            return ExitCode::SUCCESS;
-        }
-        Err(message) => {
-            eprintln!("tracer: {message}");
-            return ExitCode::from(2);
-        }
-    };
+    // clap prints usage errors and exits with status 2, and --help with 0.
+    let options = Options::from(Cli::parse());
     match run(&options) {
         Ok(()) => ExitCode::SUCCESS,
         Err(message) => {
@@ -285,34 +348,67 @@ fn main() -> ExitCode {
     }
 }
 
+/// Creates `path`'s directory and opens the file for writing (creating it
+/// empty if absent, keeping what it holds), so that a bad output path
+/// fails before any rendering.
+fn claim_output(path: &Path) -> Result<(), String> {
+    if let Some(parent) = path.parent().filter(|p| !p.as_os_str().is_empty()) {
+        fs::create_dir_all(parent)
+            .map_err(|e| format!("cannot create {}: {e}", parent.display()))?;
+    }
+    fs::OpenOptions::new()
+        .append(true)
+        .create(true)
+        .open(path)
+        .map(drop)
+        .map_err(|e| format!("cannot write {}: {e}", path.display()))
+}
+
 fn run(options: &Options) -> Result<(), String> {
     let started = Instant::now();
     let out = &options.out;
     fs::create_dir_all(out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
+    for path in options.report.iter().chain(&options.docs) {
+        claim_output(path)?;
+    }
+    let sizes_of = |scene: SceneKind| match options.size {
+        Some(size) => vec![size],
+        None => scene.default_sizes().to_vec(),
+    };
+    let frames: usize = options
+        .scenes
+        .iter()
+        .map(|&s| sizes_of(s).len())
+        .sum::<usize>()
+        * options.spps.len()
+        * options.samplers.len()
+        * options.seeds as usize;
+    let progress = Progress::new(frames as u64);
     let threads = rayon::current_num_threads();
-    eprintln!(
-        "tracer: {threads} threads, filter {}, seed {}, writing to {}",
+    progress.note(&format!(
+        "{threads} threads, filter {}, seeds {}..={}, writing to {}",
         options.filter,
         options.seed,
+        u64::from(options.seed) + u64::from(options.seeds) - 1,
         out.display()
-    );
+    ));
     let mut rows = Vec::new();
     for &scene_kind in &options.scenes {
-        let sizes = match options.size {
-            Some(size) => vec![size],
-            None => scene_kind.default_sizes().to_vec(),
-        };
-        for (width, height) in sizes {
-            rows.extend(run_scene(options, scene_kind, width, height)?);
+        for (width, height) in sizes_of(scene_kind) {
+            rows.extend(run_scene(options, &progress, scene_kind, width, height)?);
         }
     }
-    println!("{}", markdown_table(options, &rows));
+    progress.finish();
+    let tables = markdown_tables(options, &rows);
+    println!("{tables}");
     if let Some(path) = &options.report {
-        if let Some(parent) = path.parent().filter(|p| !p.as_os_str().is_empty()) {
-            fs::create_dir_all(parent)
-                .map_err(|e| format!("cannot create {}: {e}", parent.display()))?;
-        }
         fs::write(path, json_report(&rows))
+            .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    }
+    if let Some(path) = &options.docs {
+        let existing =
+            fs::read_to_string(path).map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+        fs::write(path, docs_page_from(&existing, &tables))
             .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
     }
     eprintln!(
@@ -322,9 +418,21 @@ fn run(options: &Options) -> Result<(), String> {
     Ok(())
 }
 
+/// One sampler's frames at one count: its rows' numbers and what the
+/// pictures need.
+struct Frames {
+    sampler: TracerSampler,
+    /// The first seed's frame.
+    image: Image,
+    rmse: f64,
+    /// The error spectrum, averaged over the seeds.
+    spectrum: Vec<f64>,
+}
+
 /// Renders one scene at one size with every requested sampler and count.
 fn run_scene(
     options: &Options,
+    progress: &Progress,
     scene_kind: SceneKind,
     width: u32,
     height: u32,
@@ -345,11 +453,11 @@ fn run_scene(
         options.filter,
     )
     .map_err(|e| format!("reference for {label}: {e}"))?;
-    eprintln!(
-        "tracer: {label}: reference {} in {:.2} s",
+    progress.note(&format!(
+        "{label}: reference {} in {:.2} s",
         if computed { "computed" } else { "loaded" },
         t.elapsed().as_secs_f64()
-    );
+    ));
     let zoom = viewing_zoom(width, height);
     let path = dir.join("reference.png");
     Picture::from_image(&reference, zoom)
@@ -360,52 +468,133 @@ fn run_scene(
     let crop_zoom = (192 / crop.2.max(crop.3)).max(1);
     let mut rows = Vec::new();
     for &spp in &options.spps {
-        let mut frames: Vec<(SamplerKind, Image, f64)> = Vec::new();
+        let mut frames: Vec<Frames> = Vec::new();
         for &kind in &options.samplers {
-            // A sampler may reject a count (say, one that needs powers of
-            // two, asked for 3 spp): skip that frame, keep the rest.
-            let sampler = match kind.build(spp) {
-                Ok(sampler) => sampler,
-                Err(e) => {
-                    eprintln!("tracer: {label}: skipping {kind} at {spp} spp: {e}");
-                    continue;
+            let mut squares = (0.0, 0.0);
+            let mut spectrum = vec![0.0; SPECTRUM_BINS];
+            let mut first: Option<(Image, f64, f64)> = None;
+            for seed_offset in 0..options.seeds {
+                // `seed + offset` wraps past u32::MAX: seeds are labels.
+                let seed = options.seed.wrapping_add(seed_offset);
+                // A sampler may reject a count (zsobol needs powers of
+                // two, say): skip that row, keep the rest.
+                let sampler = match kind.build(spp, width, height, seed) {
+                    Ok(sampler) => sampler,
+                    Err(e) => {
+                        progress.note(&format!("{label}: skipping {kind} at {spp} spp: {e}"));
+                        break;
+                    }
+                };
+                let draw = || {
+                    render(
+                        &scene,
+                        width,
+                        height,
+                        &sampler,
+                        FILM_DIMENSION,
+                        options.filter,
+                    )
+                };
+                let (image, seconds) = if seed_offset == 0 {
+                    timed(draw)
+                } else {
+                    (draw(), 0.0)
+                };
+                let rmse = image.rmse(&reference);
+                squares.0 += rmse * rmse;
+                let blurred = blurred_rmse(&image, &reference);
+                squares.1 += blurred * blurred;
+                for (sum, p) in
+                    spectrum
+                        .iter_mut()
+                        .zip(error_spectrum(&image, &reference, SPECTRUM_BINS))
+                {
+                    *sum += p / f64::from(options.seeds);
                 }
+                if seed_offset == 0 {
+                    first = Some((image, rmse, seconds));
+                }
+                progress.frame_done();
+            }
+            let Some((image, first_rmse, seconds)) = first else {
+                for _ in 0..options.seeds {
+                    progress.frame_done();
+                }
+                continue;
             };
-            let patterns = Patterns {
-                seed: options.seed,
-                dimension: 0,
-            };
-            let (image, seconds) =
-                timed(|| render(&scene, width, height, &sampler, patterns, options.filter));
-            let rmse = image.rmse(&reference);
             let path = dir.join(format!("{kind}-{spp}spp.png"));
             Picture::from_image(&image, zoom)
                 .write_png(&path)
                 .map_err(|e| io_error(&path, e))?;
+            let count = f64::from(options.seeds);
             rows.push(Row {
                 scene: scene_kind,
                 width,
                 height,
                 sampler: kind,
                 spp,
-                rmse,
+                rmse: (squares.0 / count).sqrt(),
+                blurred_rmse: (squares.1 / count).sqrt(),
+                low_power: low_frequency_power(&spectrum),
                 seconds,
+                seeds: options.seeds,
             });
-            frames.push((kind, image, rmse));
+            frames.push(Frames {
+                sampler: kind,
+                image,
+                rmse: first_rmse,
+                spectrum,
+            });
+        }
+        if frames.is_empty() {
+            continue;
         }
         // The contact sheet: the reference, then each sampler's frame.
         let mut tiles = vec![Tile {
             image: &reference,
             label: vec!["reference".into(), label.clone()],
         }];
-        tiles.extend(frames.iter().map(|(kind, image, rmse)| Tile {
-            image,
-            label: vec![kind.name().into(), format!("{spp} spp rmse {rmse:.4}")],
+        tiles.extend(frames.iter().map(|f| Tile {
+            image: &f.image,
+            label: vec![
+                f.sampler.name().into(),
+                format!("{spp} spp rmse {:.4}", f.rmse),
+            ],
         }));
         let path = dir.join(format!("contact-{spp}spp.png"));
         contact_sheet(&tiles, crop, crop_zoom)
             .write_png(&path)
             .map_err(|e| io_error(&path, e))?;
+        // The error images, same crop, on one scale: mid grey is no error
+        // and black / white are -/+ 4 times the smallest RMSE in the sheet.
+        let smallest = frames.iter().map(|f| f.rmse).fold(f64::INFINITY, f64::min);
+        let errors: Vec<Image> = frames
+            .iter()
+            .map(|f| error_image(&f.image, &reference, 4.0 * smallest))
+            .collect();
+        let error_tiles: Vec<Tile<'_>> = frames
+            .iter()
+            .zip(&errors)
+            .map(|(f, image)| Tile {
+                image,
+                label: vec![f.sampler.name().into(), format!("{spp} spp error")],
+            })
+            .collect();
+        let path = dir.join(format!("error-{spp}spp.png"));
+        contact_sheet(&error_tiles, crop, crop_zoom)
+            .write_png(&path)
+            .map_err(|e| io_error(&path, e))?;
+        let series: Vec<(&str, Vec<f64>)> = frames
+            .iter()
+            .map(|f| (f.sampler.name(), f.spectrum.clone()))
+            .collect();
+        let title = format!(
+            "{label}: error spectrum at {spp} spp, {} seed{}",
+            options.seeds,
+            if options.seeds == 1 { "" } else { "s" }
+        );
+        let path = dir.join(format!("error-spectrum-{spp}spp.svg"));
+        fs::write(&path, spectrum_svg(&title, &series)).map_err(|e| io_error(&path, e))?;
     }
 
     let series: Vec<Series<'_>> = options
@@ -419,6 +608,7 @@ fn run_scene(
                 .map(|r| (r.spp, r.rmse, r.seconds))
                 .collect(),
         })
+        .filter(|s| !s.points.is_empty())
         .collect();
     // Nothing to plot if every sampler rejected every count.
     if !rows.is_empty() {
@@ -427,8 +617,51 @@ fn run_scene(
         fs::write(&path, trade_plot_svg(&title, &series, options.target))
             .map_err(|e| io_error(&path, e))?;
     }
-    eprintln!("tracer: {label}: wrote {}", dir.display());
+    progress.note(&format!("{label}: wrote {}", dir.display()));
     Ok(rows)
+}
+
+/// `frame - reference` as a picture: linear 1/2 where they agree, 0 and 1
+/// at `-range` and `+range` (clamped), on the sRGB curve's inverse so the
+/// display shows the error linearly.
+fn error_image(frame: &Image, reference: &Image, range: f64) -> Image {
+    let range = if range > 0.0 { range } else { 1.0 };
+    let pixels = frame
+        .pixels
+        .iter()
+        .zip(&reference.pixels)
+        .map(|(a, b)| {
+            std::array::from_fn(|c| {
+                let shown =
+                    (0.5 + 0.5 * (f64::from(a[c]) - f64::from(b[c])) / range).clamp(0.0, 1.0);
+                srgb_to_linear(shown) as f32
+            })
+        })
+        .collect();
+    Image {
+        width: frame.width,
+        height: frame.height,
+        pixels,
+    }
+}
+
+/// The inverse of the sRGB encoding `Picture` applies.
+fn srgb_to_linear(encoded: f64) -> f64 {
+    if encoded <= 0.040_45 {
+        encoded / 12.92
+    } else {
+        ((encoded + 0.055) / 1.055).powf(2.4)
+    }
+}
+
+/// An error for a table cell: five decimals, or three significant figures
+/// in scientific notation below 0.001 (the resolved scene at high counts).
+fn format_error(value: f64) -> String {
+    if value >= 1e-3 || value == 0.0 {
+        format!("{value:.5}")
+    } else {
+        format!("{value:.2e}")
+    }
 }
 
 /// Milliseconds with three significant figures, for table cells.
@@ -445,20 +678,20 @@ fn format_ms(seconds: f64) -> String {
     }
 }
 
-/// One table per scene and size: RMSE (and ms per frame) at each spp, then
-/// the spp and time needed to reach the target RMSE.
-fn markdown_table(options: &Options, rows: &[Row]) -> String {
+/// One table per scene and size: RMSE, blurred RMSE and ms per frame at
+/// each spp, then the spp and time needed to reach the target RMSE; then
+/// the claims this run has the evidence for.
+fn markdown_tables(options: &Options, rows: &[Row]) -> String {
     let mut text = String::new();
-    let mut jobs: Vec<(SceneKind, u32, u32)> = Vec::new();
-    for r in rows {
-        if !jobs.contains(&(r.scene, r.width, r.height)) {
-            jobs.push((r.scene, r.width, r.height));
-        }
-    }
-    for (scene, width, height) in jobs {
+    let seeds = if options.seeds == 1 {
+        "one seed".to_owned()
+    } else {
+        format!("RMS over {} seeds", options.seeds)
+    };
+    for (scene, width, height) in jobs(rows) {
         let _ = writeln!(
             text,
-            "\n### {scene} {width}x{height}, {} filter: RMSE (ms per frame), and what reaching RMSE {} costs\n",
+            "\n### {scene} {width}x{height}, {} filter: RMSE / blurred RMSE (ms per frame), {seeds}; what reaching RMSE {} costs\n",
             options.filter, options.target
         );
         let mut header = String::from("| sampler |");
@@ -479,7 +712,13 @@ fn markdown_table(options: &Options, rows: &[Row]) -> String {
             for spp in &options.spps {
                 match mine.iter().find(|r| r.spp == *spp) {
                     Some(r) => {
-                        let _ = write!(line, " {:.5} ({}) |", r.rmse, format_ms(r.seconds));
+                        let _ = write!(
+                            line,
+                            " {} / {} ({}) |",
+                            format_error(r.rmse),
+                            format_error(r.blurred_rmse),
+                            format_ms(r.seconds)
+                        );
                     }
                     None => line.push_str(" skipped |"),
                 }
@@ -494,53 +733,126 @@ fn markdown_table(options: &Options, rows: &[Row]) -> String {
             let _ = writeln!(text, "{line}");
         }
     }
-    let _ = writeln!(text, "\n{}", versus_random(rows));
+    if let Some(claim) = versus_random(rows) {
+        let _ = writeln!(text, "\n{claim}");
+    }
+    if let Some(table) = zsobol_versus_sobol(rows) {
+        let _ = writeln!(text, "\n{table}");
+    }
     text
 }
 
-/// The check the tracer exists to make: from 16 spp up, does every
-/// stratified sampler beat `random` on RMSE at equal spp? Lists the
-/// exceptions rather than hiding them.
-fn versus_random(rows: &[Row]) -> String {
-    let exceptions: Vec<String> = rows
+/// The (scene, width, height) triples of `rows`, in order of appearance.
+fn jobs(rows: &[Row]) -> Vec<(SceneKind, u32, u32)> {
+    let mut jobs = Vec::new();
+    for r in rows {
+        if !jobs.contains(&(r.scene, r.width, r.height)) {
+            jobs.push((r.scene, r.width, r.height));
+        }
+    }
+    jobs
+}
+
+/// The row of `sampler` matching `r`'s scene, size and count.
+fn partner<'a>(rows: &'a [Row], r: &Row, sampler: TracerSampler) -> Option<&'a Row> {
+    rows.iter().find(|q| {
+        (q.scene, q.width, q.height, q.spp, q.sampler)
+            == (r.scene, r.width, r.height, r.spp, sampler)
+    })
+}
+
+/// From 16 spp up, does every other sampler beat `random` on RMSE at equal
+/// spp? Lists the exceptions rather than hiding them. `None` when the run
+/// has no such comparison (random, or every other sampler, not rendered at
+/// 16 spp or more).
+fn versus_random(rows: &[Row]) -> Option<String> {
+    let random = TracerSampler::Padded(SamplerKind::Random);
+    let compared: Vec<(&Row, &Row)> = rows
         .iter()
-        .filter(|r| r.spp >= 16 && r.sampler != SamplerKind::Random)
-        .filter_map(|r| {
-            let random = rows.iter().find(|q| {
-                (q.scene, q.width, q.height, q.spp, q.sampler)
-                    == (r.scene, r.width, r.height, r.spp, SamplerKind::Random)
-            })?;
-            (r.rmse >= random.rmse).then(|| {
-                format!(
-                    "{} on {} {}x{} at {} spp ({:.5} vs {:.5})",
-                    r.sampler, r.scene, r.width, r.height, r.spp, r.rmse, random.rmse
-                )
-            })
+        .filter(|r| r.spp >= 16 && r.sampler != random)
+        .filter_map(|r| Some((r, partner(rows, r, random)?)))
+        .collect();
+    if compared.is_empty() {
+        return None;
+    }
+    let exceptions: Vec<String> = compared
+        .iter()
+        .filter(|(r, random)| r.rmse >= random.rmse)
+        .map(|(r, random)| {
+            format!(
+                "{} on {} {}x{} at {} spp ({:.5} vs {:.5})",
+                r.sampler, r.scene, r.width, r.height, r.spp, r.rmse, random.rmse
+            )
         })
         .collect();
-    if exceptions.is_empty() {
-        "From 16 spp up, every other sampler has a lower RMSE than `random` at equal spp.".into()
+    Some(if exceptions.is_empty() {
+        format!(
+            "From 16 spp up, every other sampler rendered here has a lower RMSE than `random` \
+             at equal spp ({} comparisons).",
+            compared.len()
+        )
     } else {
         format!(
             "Not below `random` at equal spp (16 spp and up): {}.",
             exceptions.join("; ")
         )
-    }
+    })
 }
 
-/// The rows as a JSON array. Besides the five documented keys each row
-/// carries `width` and `height`, since `polygon` runs at two sizes.
+/// Mean of the lowest eighth of the spectrum's bins (frequencies below
+/// 1/16 cycle per pixel): the error a blurred view keeps.
+fn low_frequency_power(spectrum: &[f64]) -> f64 {
+    let low = &spectrum[..(spectrum.len() / 8).max(1)];
+    low.iter().sum::<f64>() / low.len() as f64
+}
+
+/// zsobol against sobol, row by row: the ratio of blurred RMSE, of RMSE,
+/// and of low-frequency error power. `None` unless both were rendered.
+fn zsobol_versus_sobol(rows: &[Row]) -> Option<String> {
+    let sobol = TracerSampler::Padded(SamplerKind::Sobol);
+    let pairs: Vec<(&Row, &Row)> = rows
+        .iter()
+        .filter(|r| r.sampler == TracerSampler::ZSobol)
+        .filter_map(|r| Some((r, partner(rows, r, sobol)?)))
+        .collect();
+    if pairs.is_empty() {
+        return None;
+    }
+    let mut text = String::from(
+        "#### zsobol / sobol\n\n| scene | spp | seeds | blurred RMSE ratio | RMSE ratio | low-frequency power ratio |\n| --- | ---: | ---: | ---: | ---: | ---: |\n",
+    );
+    for (z, s) in pairs {
+        let _ = writeln!(
+            text,
+            "| {} {}x{} | {} | {} | {:.3} | {:.3} | {:.3} |",
+            z.scene,
+            z.width,
+            z.height,
+            z.spp,
+            z.seeds,
+            z.blurred_rmse / s.blurred_rmse,
+            z.rmse / s.rmse,
+            z.low_power / s.low_power
+        );
+    }
+    Some(text)
+}
+
+/// The rows as a JSON array.
 fn json_report(rows: &[Row]) -> String {
     let items: Vec<String> = rows
         .iter()
         .map(|r| {
             format!(
-                r#"  {{"scene": "{}", "sampler": "{}", "spp": {}, "rmse": {:e}, "seconds": {:e}, "width": {}, "height": {}}}"#,
+                r#"  {{"scene": "{}", "sampler": "{}", "spp": {}, "rmse": {:e}, "blurred_rmse": {:e}, "low_frequency_power": {:e}, "seconds": {:e}, "seeds": {}, "width": {}, "height": {}}}"#,
                 r.scene,
                 r.sampler.name(),
                 r.spp,
                 r.rmse,
+                r.blurred_rmse,
+                r.low_power,
                 r.seconds,
+                r.seeds,
                 r.width,
                 r.height
             )
@@ -549,28 +861,101 @@ fn json_report(rows: &[Row]) -> String {
     format!("[\n{}\n]\n", items.join(",\n"))
 }
 
+/// Marks the part of a `--docs` page the tracer owns: on a re-run only the
+/// text between the markers is replaced, so prose around it survives.
+const DOCS_BEGIN: &str = "<!-- tracer: generated from here; edit outside the markers -->";
+const DOCS_END: &str = "<!-- tracer: generated up to here -->";
+
+/// The command that reproduces this run, as a shell line.
+fn command_line() -> String {
+    let mut line = String::from("cargo run --release --example tracer");
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    if !args.is_empty() {
+        line.push_str(" --");
+        for arg in args {
+            let plain = arg
+                .chars()
+                .all(|c| c.is_ascii_alphanumeric() || "-_=,./:".contains(c));
+            if plain {
+                let _ = write!(line, " {arg}");
+            } else {
+                let _ = write!(line, " '{}'", arg.replace('\'', r"'\''"));
+            }
+        }
+    }
+    line
+}
+
+/// The CPU model (from /proc/cpuinfo where there is one), OS and threads.
+fn machine() -> String {
+    let cpu = fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|info| {
+            info.lines().find_map(|l| {
+                l.strip_prefix("model name")
+                    .map(|v| v.trim_start_matches([' ', '\t', ':']).to_owned())
+            })
+        })
+        .unwrap_or_else(|| "unknown CPU".to_owned());
+    format!(
+        "{cpu}, {} {}, {} rayon threads",
+        std::env::consts::OS,
+        std::env::consts::ARCH,
+        rayon::current_num_threads()
+    )
+}
+
+/// The generated block of a `--docs` page.
+fn docs_block(tables: &str) -> String {
+    format!(
+        "{DOCS_BEGIN}\n\nRegenerate with:\n\n```sh\n{}\n```\n\nMachine: {}. Times are the fastest of repeated renders of one frame; other work on the machine inflates them.\n{tables}\n{DOCS_END}\n",
+        command_line(),
+        machine()
+    )
+}
+
+/// The `--docs` page: `existing` with its generated block replaced, or
+/// with the block appended when it has none (a new page when empty).
+fn docs_page_from(existing: &str, tables: &str) -> String {
+    let block = docs_block(tables);
+    match (existing.find(DOCS_BEGIN), existing.find(DOCS_END)) {
+        (Some(begin), Some(end)) if end > begin => format!(
+            "{}{block}{}",
+            &existing[..begin],
+            existing[end + DOCS_END.len()..].trim_start_matches('\n')
+        ),
+        _ if existing.trim().is_empty() => format!("# Tracer measurements\n\n{block}"),
+        // A page of prose with no block yet: the block goes at its end.
+        _ => format!("{}\n\n{block}", existing.trim_end()),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    fn args(list: &[&str]) -> Vec<String> {
-        list.iter().map(|s| s.to_string()).collect()
+    fn run_options(list: &[&str]) -> Options {
+        let args = std::iter::once("tracer").chain(list.iter().copied());
+        match Cli::try_parse_from(args) {
+            Ok(cli) => Options::from(cli),
+            Err(e) => panic!("{list:?}: {e}"),
+        }
     }
 
-    fn run_options(list: &[&str]) -> Options {
-        match parse_args(args(list)) {
-            Ok(Command::Run(options)) => options,
-            other => panic!("{list:?}: {other:?}"),
-        }
+    fn parse_error(list: &[&str]) -> clap::Error {
+        let args = std::iter::once("tracer").chain(list.iter().copied());
+        Cli::try_parse_from(args).expect_err(&format!("{list:?} should fail"))
     }
 
     #[test]
     fn no_arguments_mean_everything() {
         let options = run_options(&[]);
         assert_eq!(options.scenes, SceneKind::ALL);
-        assert_eq!(options.samplers, SamplerKind::ALL);
+        assert_eq!(options.samplers, TracerSampler::all());
+        assert!(options.samplers.contains(&TracerSampler::ZSobol));
         assert_eq!(options.spps, DEFAULT_SPP);
         assert_eq!(options.filter, Filter::Box);
+        assert_eq!((options.seed, options.seeds), (0, 1));
         assert_eq!(options.out, PathBuf::from("out"));
     }
 
@@ -578,8 +963,8 @@ mod tests {
     fn lists_narrow_the_run() {
         let options = run_options(&[
             "--scene",
-            "moire,checker",
-            "--sampler=regular,n-rooks",
+            "moire,checker,moire",
+            "--sampler=regular,n-rooks,zsobol",
             "--spp",
             "16,4",
             "--size",
@@ -588,24 +973,36 @@ mod tests {
             "mitchell",
             "--seed",
             "9",
+            "--seeds=4",
             "--report",
             "r.json",
+            "--docs",
+            "d.md",
         ]);
         assert_eq!(options.scenes, [SceneKind::Moire, SceneKind::Checker]);
         assert_eq!(
             options.samplers,
-            [SamplerKind::Regular, SamplerKind::NRooks]
+            [
+                TracerSampler::Padded(SamplerKind::Regular),
+                TracerSampler::Padded(SamplerKind::NRooks),
+                TracerSampler::ZSobol
+            ]
         );
         assert_eq!(options.spps, [4, 16]);
         assert_eq!(options.size, Some((32, 8)));
         assert_eq!(options.filter, Filter::Mitchell);
-        assert_eq!(options.seed, 9);
+        assert_eq!((options.seed, options.seeds), (9, 4));
         assert_eq!(options.report, Some(PathBuf::from("r.json")));
+        assert_eq!(options.docs, Some(PathBuf::from("d.md")));
         assert_eq!(run_options(&["--size", "100"]).size, Some((100, 100)));
+        assert_eq!(
+            run_options(&["--scene", "moire-resolved"]).scenes,
+            [SceneKind::MoireResolved]
+        );
     }
 
     #[test]
-    fn bad_values_are_errors_and_help_is_not() {
+    fn bad_values_are_usage_errors_that_name_the_item() {
         for bad in [
             &["--scene", "teapot"][..],
             &["--sampler", "best"],
@@ -615,18 +1012,114 @@ mod tests {
             &["--size", "big"],
             &["--filter", "lanczos"],
             &["--seed", "-1"],
+            &["--seeds", "0"],
             &["--target", "0"],
             &["--spp"],
             &["--frobnicate"],
         ] {
-            let result = parse_args(args(bad));
-            let message = result.expect_err(&format!("{bad:?} should fail"));
-            assert!(!message.contains('\n'), "{bad:?}: {message}");
+            let error = parse_error(bad);
+            // Usage errors exit with status 2.
+            assert_eq!(error.exit_code(), 2, "{bad:?}");
         }
-        assert_eq!(
-            parse_args(args(&["--spp", "4", "--help"])),
-            Ok(Command::Help)
+        let message = parse_error(&["--sampler", "regular, jittered"]).to_string();
+        assert!(
+            message.contains("unknown sampler \" jittered\""),
+            "{message}"
         );
+        assert!(message.contains("zsobol"), "{message}");
+    }
+
+    #[test]
+    fn help_lists_every_option_and_the_outputs() {
+        let error = parse_error(&["--spp", "4", "--help"]);
+        assert_eq!(error.exit_code(), 0);
+        let help = error.to_string();
+        for option in [
+            "--scene",
+            "--sampler",
+            "--spp",
+            "--size",
+            "--filter",
+            "--seed ",
+            "--seeds",
+            "--target",
+            "--out",
+            "--report",
+            "--docs",
+            "--help",
+        ] {
+            assert!(help.contains(option), "{option} missing from --help");
+        }
+        for text in ["reference.png", "error-spectrum", "Exit status"] {
+            assert!(help.contains(text), "{text} missing from --help");
+        }
+    }
+
+    #[test]
+    fn bad_output_paths_fail_before_rendering() {
+        let out = std::env::temp_dir().join(format!("tracer-test-{}", std::process::id()));
+        let mut options = run_options(&["--scene", "polygon", "--spp", "1", "--size", "4"]);
+        options.out = out.clone();
+        // A report "inside" a regular file cannot be created.
+        options.report = Some(PathBuf::from("Cargo.toml/report.json"));
+        let message = run(&options).unwrap_err();
+        assert!(message.contains("Cargo.toml"), "{message}");
+        // Nothing was rendered: the scene's directory does not exist.
+        assert!(!out.join("polygon-4x4-box").exists());
+        let _ = fs::remove_dir_all(&out);
+    }
+
+    fn row(sampler: TracerSampler, spp: u32, rmse: f64) -> Row {
+        Row {
+            scene: SceneKind::Moire,
+            width: 8,
+            height: 8,
+            sampler,
+            spp,
+            rmse,
+            blurred_rmse: rmse / 2.0,
+            low_power: rmse * rmse,
+            seconds: 0.001,
+            seeds: 1,
+        }
+    }
+
+    #[test]
+    fn claims_need_their_evidence() {
+        let sobol = TracerSampler::Padded(SamplerKind::Sobol);
+        let random = TracerSampler::Padded(SamplerKind::Random);
+        // No random in the run: no claim about random.
+        assert_eq!(versus_random(&[row(sobol, 16, 0.01)]), None);
+        // Random only below 16 spp: no claim either.
+        assert_eq!(
+            versus_random(&[row(sobol, 4, 0.01), row(random, 4, 0.02)]),
+            None
+        );
+        let claim = versus_random(&[row(sobol, 16, 0.01), row(random, 16, 0.02)]).unwrap();
+        assert!(claim.contains("every other sampler"), "{claim}");
+        let claim = versus_random(&[row(sobol, 16, 0.03), row(random, 16, 0.02)]).unwrap();
+        assert!(claim.starts_with("Not below"), "{claim}");
+        // zsobol against sobol only when both ran.
+        assert_eq!(zsobol_versus_sobol(&[row(sobol, 16, 0.01)]), None);
+        let table =
+            zsobol_versus_sobol(&[row(sobol, 16, 0.02), row(TracerSampler::ZSobol, 16, 0.01)])
+                .unwrap();
+        assert!(table.contains("| 0.500 | 0.500 | 0.250 |"), "{table}");
+    }
+
+    #[test]
+    fn docs_pages_keep_the_prose_around_the_generated_block() {
+        let fresh = docs_page_from("", "TABLES");
+        assert!(fresh.starts_with("# Tracer measurements") && fresh.contains("TABLES"));
+        let page =
+            format!("# Mine\n\nprose before\n\n{DOCS_BEGIN}\nold\n{DOCS_END}\n\nprose after\n");
+        let updated = docs_page_from(&page, "NEW");
+        assert!(updated.starts_with("# Mine\n\nprose before\n\n"));
+        assert!(updated.contains("NEW") && !updated.contains("old"));
+        assert!(updated.ends_with("prose after\n"));
+        assert!(updated.contains("cargo run --release --example tracer"));
+        let appended = docs_page_from("# Prose\n\ntext\n", "T");
+        assert!(appended.starts_with("# Prose\n\ntext\n\n") && appended.contains(DOCS_END));
     }
 
     #[test]

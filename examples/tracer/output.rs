@@ -92,20 +92,59 @@ pub struct Tile<'a> {
     pub label: Vec<String>,
 }
 
+/// `line` broken into pieces of at most `max_chars` characters, after a
+/// `-` or at a space where possible ("correlated-multi-jittered" becomes
+/// "correlated-" / "multi-jittered"), so labels never run into the next tile.
+pub fn wrap_label(line: &str, max_chars: usize) -> Vec<String> {
+    let max_chars = max_chars.max(1);
+    let mut pieces = Vec::new();
+    let mut rest: Vec<char> = line.chars().collect();
+    while rest.len() > max_chars {
+        let window = &rest[..=max_chars];
+        let cut = window[..max_chars]
+            .iter()
+            .rposition(|&c| c == '-')
+            .map(|i| i + 1)
+            .or_else(|| window.iter().rposition(|&c| c == ' '))
+            .filter(|&i| i > 0)
+            .unwrap_or(max_chars);
+        pieces.push(rest[..cut].iter().collect::<String>().trim_end().to_owned());
+        rest.drain(..cut);
+        while rest.first() == Some(&' ') {
+            rest.remove(0);
+        }
+    }
+    pieces.push(rest.into_iter().collect());
+    pieces
+}
+
 /// The same `crop` of every tile's image side by side, each enlarged
-/// `zoom` times, with its label lines underneath in the built-in font.
+/// `zoom` times, with its label lines underneath in the built-in font,
+/// wrapped to the tile width (at least 14 characters).
 pub fn contact_sheet(tiles: &[Tile<'_>], crop: Crop, zoom: u32) -> Picture {
     const GAP: u32 = 8;
     const TEXT_SCALE: u32 = 2;
+    const MIN_CHARS: u32 = 14;
     let line_height = (GLYPH_HEIGHT + 2) * TEXT_SCALE;
-    let label_width = tiles
+    let (cw, ch) = (crop.2 * zoom, crop.3 * zoom);
+    let advance = (GLYPH_WIDTH + 1) * TEXT_SCALE;
+    let max_chars = (cw / advance).max(MIN_CHARS) as usize;
+    let labels: Vec<Vec<String>> = tiles
         .iter()
-        .flat_map(|t| &t.label)
+        .map(|t| {
+            t.label
+                .iter()
+                .flat_map(|l| wrap_label(l, max_chars))
+                .collect()
+        })
+        .collect();
+    let label_width = labels
+        .iter()
+        .flatten()
         .map(|line| text_width(line, TEXT_SCALE))
         .max()
         .unwrap_or(0);
-    let lines = tiles.iter().map(|t| t.label.len()).max().unwrap_or(0) as u32;
-    let (cw, ch) = (crop.2 * zoom, crop.3 * zoom);
+    let lines = labels.iter().map(Vec::len).max().unwrap_or(0) as u32;
     let tile_width = cw.max(label_width);
     let width = GAP + tiles.len() as u32 * (tile_width + GAP);
     let height = GAP + ch + GAP + lines * line_height + GAP;
@@ -114,7 +153,7 @@ pub fn contact_sheet(tiles: &[Tile<'_>], crop: Crop, zoom: u32) -> Picture {
         let x = GAP + i as u32 * (tile_width + GAP);
         let zoomed = Picture::from_image(tile.image, zoom);
         sheet.blit(&zoomed, (crop.0 * zoom, crop.1 * zoom, cw, ch), x, GAP);
-        for (line_index, line) in tile.label.iter().enumerate() {
+        for (line_index, line) in labels[i].iter().enumerate() {
             let y = GAP + ch + GAP + line_index as u32 * line_height;
             draw_text(&mut sheet, line, x, y, TEXT_SCALE, [230, 230, 230]);
         }
@@ -342,6 +381,114 @@ pub fn trade_plot_svg(title: &str, series: &[Series<'_>], target: f64) -> String
     svg
 }
 
+/// The radially averaged error power spectra of one sample count, one
+/// line per sampler: frequency in cycles per pixel (0 to 0.5, low on the
+/// left) against power on a log scale. `series` holds (name, bins), bin `k`
+/// of `n` centred at `(k + 1/2) 0.5 / n`.
+pub fn spectrum_svg(title: &str, series: &[(&str, Vec<f64>)]) -> String {
+    const WIDTH: f64 = 760.0;
+    const HEIGHT: f64 = 480.0;
+    const LEFT: f64 = 70.0;
+    const RIGHT: f64 = 230.0;
+    const TOP: f64 = 40.0;
+    const BOTTOM: f64 = 50.0;
+    let values = || {
+        series
+            .iter()
+            .flat_map(|(_, bins)| bins.iter().copied())
+            .filter(|p| p.is_finite() && *p > 0.0)
+    };
+    let lo = values()
+        .fold(f64::INFINITY, f64::min)
+        .max(1e-30)
+        .log10()
+        .floor();
+    let hi = values().fold(0.0, f64::max).max(1e-30).log10().ceil();
+    let (y_lo, y_hi) = if lo.is_finite() {
+        (lo, hi.max(lo + 1.0))
+    } else {
+        (-6.0, 0.0)
+    };
+    let plot_w = WIDTH - LEFT - RIGHT;
+    let plot_h = HEIGHT - TOP - BOTTOM;
+    let sx = |f: f64| LEFT + f / 0.5 * plot_w;
+    let sy = |p: f64| TOP + (y_hi - p.max(1e-30).log10()) / (y_hi - y_lo) * plot_h;
+    let mut svg = String::new();
+    let _ = writeln!(
+        svg,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH}" height="{HEIGHT}" viewBox="0 0 {WIDTH} {HEIGHT}" font-family="sans-serif" font-size="12">"#
+    );
+    let _ = writeln!(svg, r#"<rect width="100%" height="100%" fill="white"/>"#);
+    let _ = writeln!(
+        svg,
+        r#"<text x="{}" y="22" text-anchor="middle" font-size="15">{}</text>"#,
+        LEFT + plot_w / 2.0,
+        escape(title)
+    );
+    for tick in 0..=5 {
+        let f = f64::from(tick) * 0.1;
+        let x = sx(f);
+        let _ = writeln!(
+            svg,
+            r##"<line x1="{x:.1}" y1="{TOP}" x2="{x:.1}" y2="{:.1}" stroke="#ddd"/><text x="{x:.1}" y="{:.1}" text-anchor="middle">{f:.1}</text>"##,
+            TOP + plot_h,
+            TOP + plot_h + 18.0
+        );
+    }
+    for decade in y_lo as i32..=y_hi as i32 {
+        let y = sy(10f64.powi(decade));
+        let _ = writeln!(
+            svg,
+            r##"<line x1="{LEFT}" y1="{y:.1}" x2="{:.1}" y2="{y:.1}" stroke="#ddd"/><text x="{:.1}" y="{:.1}" text-anchor="end">1e{decade}</text>"##,
+            LEFT + plot_w,
+            LEFT - 6.0,
+            y + 4.0
+        );
+    }
+    let _ = writeln!(
+        svg,
+        r##"<rect x="{LEFT}" y="{TOP}" width="{plot_w}" height="{plot_h}" fill="none" stroke="#444"/>"##
+    );
+    let _ = writeln!(
+        svg,
+        r#"<text x="{:.1}" y="{:.1}" text-anchor="middle">frequency (cycles per pixel, radially averaged)</text>"#,
+        LEFT + plot_w / 2.0,
+        HEIGHT - 10.0
+    );
+    let _ = writeln!(
+        svg,
+        r#"<text transform="translate(16 {:.1}) rotate(-90)" text-anchor="middle">error power (log)</text>"#,
+        TOP + plot_h / 2.0
+    );
+    for (i, (name, bins)) in series.iter().enumerate() {
+        let colour = PALETTE[i % PALETTE.len()];
+        let n = bins.len() as f64;
+        let points: Vec<String> = bins
+            .iter()
+            .enumerate()
+            .filter(|(_, p)| p.is_finite())
+            .map(|(k, &p)| format!("{:.1},{:.1}", sx((k as f64 + 0.5) * 0.5 / n), sy(p)))
+            .collect();
+        let _ = writeln!(
+            svg,
+            r#"<polyline points="{}" fill="none" stroke="{colour}" stroke-width="2"/>"#,
+            points.join(" ")
+        );
+        let ly = TOP + 10.0 + i as f64 * 18.0;
+        let lx = LEFT + plot_w + 14.0;
+        let _ = writeln!(
+            svg,
+            r#"<line x1="{lx}" y1="{ly}" x2="{}" y2="{ly}" stroke="{colour}" stroke-width="3"/><text x="{}" y="{}">{}</text>"#,
+            lx + 20.0,
+            lx + 26.0,
+            ly + 4.0,
+            escape(name)
+        );
+    }
+    svg.push_str("</svg>\n");
+    svg
+}
+
 /// Distinct colours for up to twelve lines (Tableau-like, picked by hand).
 const PALETTE: [&str; 12] = [
     "#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf",
@@ -364,6 +511,23 @@ mod tests {
         assert_eq!(encode_srgb(1.0), 255);
         // Linear 0.2159 is the sRGB mid-grey 128.
         assert_eq!(encode_srgb(0.2159), 128);
+    }
+
+    #[test]
+    fn long_labels_wrap_after_hyphens_and_fit() {
+        assert_eq!(
+            wrap_label("correlated-multi-jittered", 14),
+            ["correlated-", "multi-jittered"]
+        );
+        assert_eq!(
+            wrap_label("16 spp rmse 0.0123", 14),
+            ["16 spp rmse", "0.0123"]
+        );
+        assert_eq!(wrap_label("zsobol", 14), ["zsobol"]);
+        assert_eq!(wrap_label("abcdefghij", 4), ["abcd", "efgh", "ij"]);
+        for line in wrap_label("moire-resolved-192x192-box", 14) {
+            assert!(line.chars().count() <= 14, "{line}");
+        }
     }
 
     #[test]

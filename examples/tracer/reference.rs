@@ -25,9 +25,9 @@ use std::io;
 use std::path::{Path, PathBuf};
 
 use rayon::prelude::*;
-use wellspread::{AnySampler, SamplerKind};
+use wellspread::{AnySampler, Padded, SamplerKind};
 
-use crate::render::{Filter, Image, Patterns, box_pixel, render};
+use crate::render::{Filter, Image, REFERENCE_DIMENSION, box_pixel, render};
 use crate::scenes::{Checker, Moire, Polygon, Scene, SceneKind};
 
 /// Samples per pixel for Monte Carlo references: 16 times the largest
@@ -79,27 +79,22 @@ fn compute(scene: &Scene, width: u32, height: u32, filter: Filter) -> Image {
             width,
             height,
             &dense_sampler(),
-            DENSE_PATTERNS,
+            REFERENCE_DIMENSION,
             filter,
         ),
     }
 }
 
 /// The sampler for Monte Carlo references: 4096 samples on a 64 x 64
-/// multi-jittered grid.
-fn dense_sampler() -> AnySampler {
-    SamplerKind::CorrelatedMultiJittered
+/// multi-jittered grid, seed 0, used on dimension pair
+/// [`REFERENCE_DIMENSION`], which no compared image uses, so a reference
+/// is never correlated with what it measures.
+fn dense_sampler() -> Padded<AnySampler> {
+    let sampler = SamplerKind::CorrelatedMultiJittered
         .build(REFERENCE_SPP)
-        .expect("4096 is a valid sample count")
+        .expect("4096 is a valid sample count");
+    Padded::new(sampler, 0)
 }
-
-/// Patterns for Monte Carlo references: dimension pair 1, which no
-/// compared image uses, so a reference is never correlated with what it
-/// measures.
-const DENSE_PATTERNS: Patterns = Patterns {
-    seed: 0,
-    dimension: 1,
-};
 
 /// Most squares one pixel's exact checker value may clip against; pixels
 /// nearer the horizon are sampled densely instead. 10^4 squares cost about
@@ -118,7 +113,7 @@ fn checker_box(checker: &Checker, scene: &Scene, width: u32, height: u32) -> Ima
             let (px, py) = (i % width, i / width);
             checker
                 .exact_pixel(px, py, MAX_SQUARES_PER_PIXEL)
-                .unwrap_or_else(|| box_pixel(scene, &sampler, DENSE_PATTERNS, px, py))
+                .unwrap_or_else(|| box_pixel(scene, &sampler, REFERENCE_DIMENSION, px, py))
         })
         .collect();
     Image {

@@ -1,5 +1,6 @@
-//! The render core: where each pixel's samples go (the library), what they
-//! see (the scene), and how they become pixels (the reconstruction filter).
+//! The render core: where each pixel's samples go (the library's
+//! [`PixelSampler`]), what they see (the scene), and how they become pixels
+//! (the reconstruction filter).
 //!
 //! Every pixel value is a fixed sequence of f64 additions in a fixed order,
 //! whichever thread computes it, so the image is bit-identical for any
@@ -9,7 +10,8 @@ use std::fmt;
 use std::str::FromStr;
 
 use rayon::prelude::*;
-use wellspread::{AnySampler, Sampler2D, hash::pattern_seed};
+use wellspread::glam::Vec2;
+use wellspread::{AnySampler, Padded, PixelSampler, SamplerKind, ZSobol};
 
 use crate::scenes::{Rgb, Scene};
 
@@ -134,34 +136,125 @@ impl FromStr for Filter {
     }
 }
 
-/// Where a render's sample patterns come from.
-#[derive(Clone, Copy, Debug)]
-pub struct Patterns {
-    /// The `frame` argument of `pattern_seed`: `--seed`.
-    pub seed: u32,
-    /// The dimension pair. Images use 0 (film position); the Monte Carlo
-    /// references use 1, a pattern no compared image uses, so a reference
-    /// is never correlated with what it measures.
-    pub dimension: u32,
+/// A sampler as the command line names it: one of the library's
+/// [`SamplerKind`]s, padded across pixels with [`Padded`], or `zsobol`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum TracerSampler {
+    /// `Padded::new(kind.build(spp), seed)`: an independent pattern per
+    /// pixel, white-noise error across pixels.
+    Padded(SamplerKind),
+    /// [`ZSobol`]: blue-noise error across pixels.
+    ZSobol,
 }
 
+impl TracerSampler {
+    /// Every sampler, in the order tables list them.
+    pub fn all() -> Vec<TracerSampler> {
+        let mut all: Vec<TracerSampler> = SamplerKind::ALL
+            .iter()
+            .map(|&kind| TracerSampler::Padded(kind))
+            .collect();
+        all.push(TracerSampler::ZSobol);
+        all
+    }
+
+    /// The command-line name.
+    pub fn name(self) -> &'static str {
+        match self {
+            TracerSampler::Padded(kind) => kind.name(),
+            TracerSampler::ZSobol => "zsobol",
+        }
+    }
+
+    /// The pixel sampler for `spp` samples per pixel on a `width x height`
+    /// film with frame seed `seed`.
+    pub fn build(
+        self,
+        spp: u32,
+        width: u32,
+        height: u32,
+        seed: u32,
+    ) -> Result<FrameSampler, wellspread::Error> {
+        Ok(match self {
+            TracerSampler::Padded(kind) => {
+                FrameSampler::Padded(Padded::new(kind.build(spp)?, seed))
+            }
+            TracerSampler::ZSobol => FrameSampler::ZSobol(ZSobol::new(spp, [width, height], seed)?),
+        })
+    }
+}
+
+impl fmt::Display for TracerSampler {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for TracerSampler {
+    type Err = String;
+
+    fn from_str(name: &str) -> Result<Self, Self::Err> {
+        if name == "zsobol" {
+            return Ok(TracerSampler::ZSobol);
+        }
+        match name.parse::<SamplerKind>() {
+            Ok(kind) => Ok(TracerSampler::Padded(kind)),
+            Err(e) => Err(format!("{e} zsobol")),
+        }
+    }
+}
+
+/// The pixel sampler of one frame, with static dispatch.
+#[derive(Clone, Copy, Debug)]
+pub enum FrameSampler {
+    /// A library sampler, padded.
+    Padded(Padded<AnySampler>),
+    /// ZSobol.
+    ZSobol(ZSobol),
+}
+
+impl PixelSampler for FrameSampler {
+    #[inline]
+    fn samples_per_pixel(&self) -> u32 {
+        match self {
+            FrameSampler::Padded(s) => s.samples_per_pixel(),
+            FrameSampler::ZSobol(s) => s.samples_per_pixel(),
+        }
+    }
+
+    #[inline]
+    fn sample_pixel(&self, pixel: [u32; 2], index: u32, dimension: u32) -> Vec2 {
+        match self {
+            FrameSampler::Padded(s) => s.sample_pixel(pixel, index, dimension),
+            FrameSampler::ZSobol(s) => s.sample_pixel(pixel, index, dimension),
+        }
+    }
+}
+
+/// The dimension pair images use for the film position. Monte Carlo
+/// references use [`REFERENCE_DIMENSION`], a pair no compared image uses,
+/// so a reference is never correlated with what it measures.
+pub const FILM_DIMENSION: u32 = 0;
+/// See [`FILM_DIMENSION`].
+pub const REFERENCE_DIMENSION: u32 = 1;
+
 /// Renders `scene` on its `width x height` film: pixel `(px, py)` takes
-/// samples `0..sampler.len()` of pattern
-/// `pattern_seed(px, py, patterns.seed, patterns.dimension)` as offsets
-/// inside the pixel, and `filter` turns them into pixel values.
+/// samples `0..samples_per_pixel()` of dimension pair `dimension` of
+/// `sampler` as offsets inside the pixel, and `filter` turns them into
+/// pixel values.
 ///
 /// Runs on the current rayon pool (`ThreadPool::install` picks another).
-pub fn render(
+pub fn render<P: PixelSampler>(
     scene: &Scene,
     width: u32,
     height: u32,
-    sampler: &AnySampler,
-    patterns: Patterns,
+    sampler: &P,
+    dimension: u32,
     filter: Filter,
 ) -> Image {
     let pixels = match filter {
-        Filter::Box => render_box(scene, width, height, sampler, patterns),
-        _ => render_filtered(scene, width, height, sampler, patterns, filter),
+        Filter::Box => render_box(scene, width, height, sampler, dimension),
+        _ => render_filtered(scene, width, height, sampler, dimension, filter),
     };
     Image {
         width,
@@ -173,15 +266,14 @@ pub fn render(
 /// The sample positions of pixel `(px, py)` in film coordinates, one at a
 /// time: the library's O(1) random access means no per-pixel buffer.
 #[inline]
-fn pixel_samples(
-    sampler: &AnySampler,
-    patterns: Patterns,
+fn pixel_positions<P: PixelSampler>(
+    sampler: &P,
+    dimension: u32,
     px: u32,
     py: u32,
 ) -> impl Iterator<Item = (f64, f64)> + '_ {
-    let pattern = pattern_seed(px, py, patterns.seed, patterns.dimension);
-    (0..sampler.len()).map(move |index| {
-        let offset = sampler.sample(index, pattern);
+    (0..sampler.samples_per_pixel()).map(move |index| {
+        let offset = sampler.sample_pixel([px, py], index, dimension);
         (
             f64::from(px) + f64::from(offset.x),
             f64::from(py) + f64::from(offset.y),
@@ -191,12 +283,12 @@ fn pixel_samples(
 
 /// Box filter: every pixel is the plain mean of its own samples, so rows
 /// are independent and each is one rayon task.
-fn render_box(
+fn render_box<P: PixelSampler>(
     scene: &Scene,
     width: u32,
     height: u32,
-    sampler: &AnySampler,
-    patterns: Patterns,
+    sampler: &P,
+    dimension: u32,
 ) -> Vec<Rgb> {
     let mut pixels = vec![[0.0; 3]; width as usize * height as usize];
     pixels
@@ -204,22 +296,28 @@ fn render_box(
         .enumerate()
         .for_each(|(py, row)| {
             for (pixel, px) in row.iter_mut().zip(0..width) {
-                *pixel = box_pixel(scene, sampler, patterns, px, py as u32);
+                *pixel = box_pixel(scene, sampler, dimension, px, py as u32);
             }
         });
     pixels
 }
 
 /// One box-filtered pixel: the mean radiance of its samples, summed in f64.
-pub fn box_pixel(scene: &Scene, sampler: &AnySampler, patterns: Patterns, px: u32, py: u32) -> Rgb {
+pub fn box_pixel<P: PixelSampler>(
+    scene: &Scene,
+    sampler: &P,
+    dimension: u32,
+    px: u32,
+    py: u32,
+) -> Rgb {
     let mut sum = [0.0f64; 3];
-    for (x, y) in pixel_samples(sampler, patterns, px, py) {
+    for (x, y) in pixel_positions(sampler, dimension, px, py) {
         let radiance = scene.radiance(x, y);
         for c in 0..3 {
             sum[c] += f64::from(radiance[c]);
         }
     }
-    let inverse_count = 1.0 / f64::from(sampler.len());
+    let inverse_count = 1.0 / f64::from(sampler.samples_per_pixel());
     sum.map(|s| (s * inverse_count) as f32)
 }
 
@@ -235,12 +333,12 @@ const BAND_ROWS: u32 = 16;
 /// the band's pixels in a fixed order. Rows near a band edge are shaded
 /// twice, by both bands, which is the price of bands never sharing
 /// writable state.
-fn render_filtered(
+fn render_filtered<P: PixelSampler>(
     scene: &Scene,
     width: u32,
     height: u32,
-    sampler: &AnySampler,
-    patterns: Patterns,
+    sampler: &P,
+    dimension: u32,
     filter: Filter,
 ) -> Vec<Rgb> {
     let radius = filter.radius();
@@ -260,7 +358,7 @@ fn render_filtered(
             let last_row = (band_y0 + band_rows - 1 + margin).min(i64::from(height) - 1);
             for sy in first_row..=last_row {
                 for sx in 0..width {
-                    for (x, y) in pixel_samples(sampler, patterns, sx, sy as u32) {
+                    for (x, y) in pixel_positions(sampler, dimension, sx, sy as u32) {
                         let radiance = scene.radiance(x, y).map(f64::from);
                         // Pixels whose centre (p + 1/2) is within the radius.
                         let x_lo = ((x - 0.5 - radius).floor() as i64 + 1).max(0);
@@ -303,7 +401,6 @@ fn render_filtered(
 mod tests {
     use super::*;
     use crate::scenes::SceneKind;
-    use wellspread::SamplerKind;
 
     fn bits(image: &Image) -> Vec<u32> {
         image.pixels.iter().flatten().map(|v| v.to_bits()).collect()
@@ -318,20 +415,21 @@ mod tests {
                 .unwrap()
         };
         let (one, two) = (pool(1), pool(2));
-        let patterns = Patterns {
-            seed: 7,
-            dimension: 0,
-        };
         // 40 rows make three bands, so the wide filters' band seams are
         // exercised too.
         let (width, height) = (24, 40);
         for scene_kind in SceneKind::ALL {
             let scene = scene_kind.build(width, height);
             for filter in Filter::ALL {
-                let sampler = SamplerKind::CorrelatedMultiJittered.build(16).unwrap();
-                let a = one.install(|| render(&scene, width, height, &sampler, patterns, filter));
-                let b = two.install(|| render(&scene, width, height, &sampler, patterns, filter));
-                assert_eq!(bits(&a), bits(&b), "{scene_kind} {filter}");
+                for kind in [
+                    TracerSampler::Padded(SamplerKind::CorrelatedMultiJittered),
+                    TracerSampler::ZSobol,
+                ] {
+                    let sampler = kind.build(16, width, height, 7).unwrap();
+                    let a = one.install(|| render(&scene, width, height, &sampler, 0, filter));
+                    let b = two.install(|| render(&scene, width, height, &sampler, 0, filter));
+                    assert_eq!(bits(&a), bits(&b), "{scene_kind} {filter} {kind}");
+                }
             }
         }
     }
@@ -360,12 +458,37 @@ mod tests {
     fn box_render_of_a_constant_region_is_exact() {
         // Inside the 64 x 64 polygon, every sample sees yellow.
         let scene = SceneKind::Polygon.build(64, 64);
-        let sampler = SamplerKind::Random.build(4).unwrap();
-        let patterns = Patterns {
-            seed: 0,
-            dimension: 0,
-        };
-        let image = render(&scene, 64, 64, &sampler, patterns, Filter::Box);
+        let sampler = TracerSampler::Padded(SamplerKind::Random)
+            .build(4, 64, 64, 0)
+            .unwrap();
+        let image = render(&scene, 64, 64, &sampler, FILM_DIMENSION, Filter::Box);
         assert_eq!(image.pixels[32 * 64 + 20], crate::scenes::Polygon::YELLOW);
+    }
+}
+
+#[cfg(test)]
+mod sampler_tests {
+    use super::*;
+
+    #[test]
+    fn names_round_trip_and_bad_names_are_named() {
+        for kind in TracerSampler::all() {
+            assert_eq!(kind.name().parse::<TracerSampler>(), Ok(kind));
+        }
+        let message = " jittered".parse::<TracerSampler>().unwrap_err();
+        assert!(message.contains("\" jittered\""), "{message}");
+        assert!(message.ends_with("pmj02 zsobol"), "{message}");
+    }
+
+    #[test]
+    fn padded_kinds_use_the_library_adapter() {
+        let sampler = TracerSampler::Padded(SamplerKind::Sobol)
+            .build(4, 8, 8, 3)
+            .unwrap();
+        let expected = Padded::new(SamplerKind::Sobol.build(4).unwrap(), 3);
+        assert_eq!(
+            sampler.sample_pixel([2, 5], 1, 0),
+            expected.sample_pixel([2, 5], 1, 0)
+        );
     }
 }

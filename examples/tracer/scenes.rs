@@ -17,36 +17,46 @@ pub type Rgb = [f32; 3];
 pub enum SceneKind {
     /// An infinite checkerboard plane receding to the horizon.
     Checker,
-    /// `1/2 (1 + sin(x^2 y^2))`, the zone-plate-like moire test.
+    /// `1/2 (1 + sin(x^2 y^2))` over `[0, 10]^2`, the zone-plate-like
+    /// moire test: beyond a third of the way out it is finer than a pixel.
     Moire,
+    /// The same function over `[0, 3]^2`, which the pixels resolve: smooth
+    /// inside every pixel, where screen-space error ordering (zsobol) pays.
+    MoireResolved,
     /// A yellow polygon on a dark background, at tiny and small sizes.
     Polygon,
 }
 
 impl SceneKind {
     /// Every scene, in the order the default run renders them.
-    pub const ALL: [SceneKind; 3] = [SceneKind::Checker, SceneKind::Moire, SceneKind::Polygon];
+    pub const ALL: [SceneKind; 4] = [
+        SceneKind::Checker,
+        SceneKind::Moire,
+        SceneKind::MoireResolved,
+        SceneKind::Polygon,
+    ];
 
     /// The command-line name.
     pub fn name(self) -> &'static str {
         match self {
             SceneKind::Checker => "checker",
             SceneKind::Moire => "moire",
+            SceneKind::MoireResolved => "moire-resolved",
             SceneKind::Polygon => "polygon",
         }
     }
 
-    /// The film sizes (width, height) the default run renders. Sampling
-    /// costs 10 to 80 ns per sample, so the default run (every sampler,
-    /// 1 + 4 + 16 + 64 + 256 = 341 samples per pixel) is about 12 M samples
-    /// per sampler at 192 x 192. Six samplers took 16 s of CPU time, so ten
-    /// need about 15 s of wall time on two idle cores and still fit in a
-    /// minute on two cores shared with other work. The polygon is shown at
-    /// 5 x 7, where one pixel is a large fraction of the shape, and at
-    /// 64 x 64, where the staircase along its edges is plain.
+    /// The film sizes (width, height) the default run renders. The default
+    /// run (eleven samplers, 1 + 4 + 16 + 64 + 256 = 341 samples per pixel)
+    /// shades about 12.6 M samples per sampler and scene at 192 x 192; the
+    /// whole run is about 45 CPU seconds on the machine of
+    /// `docs/tracer.md`, so it fits in well under a minute on two cores.
+    /// The polygon is shown at 5 x 7, where one pixel is a large fraction
+    /// of the shape, and at 64 x 64, where the staircase along its edges is
+    /// plain.
     pub fn default_sizes(self) -> &'static [(u32, u32)] {
         match self {
-            SceneKind::Checker | SceneKind::Moire => &[(192, 192)],
+            SceneKind::Checker | SceneKind::Moire | SceneKind::MoireResolved => &[(192, 192)],
             SceneKind::Polygon => &[(5, 7), (64, 64)],
         }
     }
@@ -55,7 +65,10 @@ impl SceneKind {
     pub fn build(self, width: u32, height: u32) -> Scene {
         match self {
             SceneKind::Checker => Scene::Checker(Checker::new(width, height)),
-            SceneKind::Moire => Scene::Moire(Moire::new(width, height)),
+            SceneKind::Moire => Scene::Moire(Moire::new(width, height, Moire::RANGE)),
+            SceneKind::MoireResolved => {
+                Scene::Moire(Moire::new(width, height, Moire::RESOLVED_RANGE))
+            }
             SceneKind::Polygon => Scene::Polygon(Polygon::new(width, height)),
         }
     }
@@ -75,7 +88,9 @@ impl FromStr for SceneKind {
             .into_iter()
             .find(|kind| kind.name() == name)
             .ok_or_else(|| {
-                format!("unknown scene {name:?}; expected one of: checker moire polygon")
+                format!(
+                    "unknown scene {name:?}; expected one of: checker moire moire-resolved polygon"
+                )
             })
     }
 }
@@ -288,8 +303,13 @@ impl Checker {
     }
 }
 
-/// `f(u, v) = 1/2 (1 + sin(u^2 v^2))` over `u, v in [0, 10]`, origin at the
-/// bottom left.
+/// `f(u, v) = 1/2 (1 + sin(u^2 v^2))` over `u, v in [0, range]`, origin at
+/// the bottom left: `range` is 10 for `moire` and 3 for `moire-resolved`.
+///
+/// Over `[0, 3]^2` the highest local frequency, `2 uv sqrt(u^2 + v^2)` at
+/// the far corner, is about 76 radians per unit, 1.2 radians per pixel at
+/// 192 pixels: below Nyquist (pi) everywhere, so the image is resolved and
+/// smooth inside each pixel.
 ///
 /// The local frequency grows like `|grad(u^2 v^2)| = 2uv sqrt(u^2 + v^2)`
 /// radians per unit. With the classic range of 10 units across, the Nyquist
@@ -307,13 +327,15 @@ pub struct Moire {
 }
 
 impl Moire {
-    /// Side of the square domain `[0, RANGE]^2`.
+    /// Side of the square domain `[0, RANGE]^2` of `moire`.
     pub const RANGE: f64 = 10.0;
+    /// Side of the domain of `moire-resolved`.
+    pub const RESOLVED_RANGE: f64 = 3.0;
 
-    fn new(width: u32, height: u32) -> Self {
+    fn new(width: u32, height: u32, range: f64) -> Self {
         Self {
-            scale_x: Self::RANGE / f64::from(width),
-            scale_y: Self::RANGE / f64::from(height),
+            scale_x: range / f64::from(width),
+            scale_y: range / f64::from(height),
             height: f64::from(height),
         }
     }

@@ -13,6 +13,7 @@ mod pmj02;
 mod random;
 mod regular;
 mod sobol;
+mod zsobol;
 
 use core::fmt;
 use core::str::FromStr;
@@ -29,6 +30,7 @@ pub use pmj02::Pmj02;
 pub use random::Random;
 pub use regular::Regular;
 pub use sobol::Sobol;
+pub use zsobol::ZSobol;
 
 use crate::sampler::FillOn;
 use crate::simd::Isa;
@@ -85,7 +87,7 @@ macro_rules! sampler_kinds {
 
         /// Any one of wellspread's samplers, chosen at run time, with static
         /// dispatch (a `match`, no allocation).
-        #[derive(Clone, Copy, Debug, PartialEq)]
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
         #[non_exhaustive]
         pub enum AnySampler {
             $(
@@ -156,30 +158,59 @@ impl fmt::Display for SamplerKind {
     }
 }
 
-/// The error for a name that is not a sampler's; its message lists the names.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct UnknownSampler;
-
-impl fmt::Display for UnknownSampler {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str("unknown sampler; expected one of:")?;
-        for kind in SamplerKind::ALL {
-            write!(f, " {kind}")?;
-        }
-        Ok(())
-    }
-}
-
-impl core::error::Error for UnknownSampler {}
-
 impl FromStr for SamplerKind {
-    type Err = UnknownSampler;
+    type Err = Error;
 
+    /// The kind named `name` (exactly, as [`SamplerKind::name`] spells it).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::UnknownSampler`], which names the input and lists the
+    /// valid names.
     fn from_str(name: &str) -> Result<Self, Self::Err> {
         SamplerKind::ALL
             .iter()
             .copied()
             .find(|kind| kind.name() == name)
-            .ok_or(UnknownSampler)
+            .ok_or(Error::UnknownSampler {
+                name: crate::error::InputText::new(name),
+            })
+    }
+}
+
+/// `SamplerKind` in settings files (feature `serde`): serialized as its
+/// kebab-case [`name`](SamplerKind::name), deserialized from it with the
+/// same error as [`FromStr`].
+#[cfg(feature = "serde")]
+mod serde_impls {
+    use core::fmt;
+
+    use serde::de::{self, Deserialize, Deserializer, Visitor};
+    use serde::ser::{Serialize, Serializer};
+
+    use super::SamplerKind;
+
+    impl Serialize for SamplerKind {
+        fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+            serializer.serialize_str(self.name())
+        }
+    }
+
+    impl<'de> Deserialize<'de> for SamplerKind {
+        fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+            struct Name;
+            impl Visitor<'_> for Name {
+                type Value = SamplerKind;
+
+                fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                    f.write_str("a sampler name such as \"sobol\" or \"n-rooks\"")
+                }
+
+                fn visit_str<E: de::Error>(self, name: &str) -> Result<SamplerKind, E> {
+                    name.parse().map_err(E::custom)
+                }
+            }
+            deserializer.deserialize_str(Name)
+        }
     }
 }

@@ -2,7 +2,7 @@ use glam::Vec2;
 
 use crate::Error;
 use crate::primitives::owen_scramble;
-use crate::sampler::{FillOn, Sampler2D, check_fill_len};
+use crate::sampler::{FillOn, Sampler2D, check_fill_from, check_fill_len};
 use crate::samplers::digital::{
     DigitalSequence, OwenSeeds, bits_to_point, fill_sequence, scrambled_bits,
 };
@@ -31,6 +31,7 @@ use crate::simd::Isa;
 /// ([`pattern_seed`](crate::primitives::pattern_seed)): the independent index
 /// shuffle is what decorrelates pairs (Burley's "padding"), since two
 /// pairs then see unrelated points of the sequence at the same `index`.
+/// [`Padded`](crate::Padded) does this for a whole image.
 ///
 /// # Properties
 ///
@@ -130,6 +131,43 @@ impl Sobol {
             return Err(Error::ZeroSamples);
         }
         Ok(Self { n })
+    }
+
+    /// The sequence with no set size: every index in `0..2^32` is valid
+    /// and [`len`](Sampler2D::len) is `u32::MAX`, so `fill` writes any
+    /// prefix. The same points as `Sobol::new(n)` for every `n`: the size
+    /// only bounds [`fill`](Sampler2D::fill). Use it with
+    /// [`fill_from`](Self::fill_from) for progressive rendering.
+    ///
+    /// ```
+    /// use wellspread::{Sobol, Sampler2D};
+    /// let sequence = Sobol::unbounded();
+    /// assert_eq!(sequence.sample(1000, 3), Sobol::new(16)?.sample(1000, 3));
+    /// // Render 16 samples, look, then add 16 more.
+    /// let mut points = vec![wellspread::glam::Vec2::ZERO; 32];
+    /// sequence.fill(3, &mut points[..16]);
+    /// sequence.fill_from(16, 3, &mut points[16..]);
+    /// assert_eq!(points[20], sequence.sample(20, 3));
+    /// # Ok::<(), wellspread::Error>(())
+    /// ```
+    #[must_use]
+    pub const fn unbounded() -> Self {
+        Self { n: u32::MAX }
+    }
+
+    /// Writes samples `start..start + out.len()` of pattern `pattern` into
+    /// `out`: exactly what [`sample`](Sampler2D::sample) returns for each
+    /// index, through the same batched path as [`fill`](Sampler2D::fill).
+    /// The set size does not bound it; only the end of the index range does.
+    ///
+    /// # Panics
+    ///
+    /// If `start + out.len()` exceeds `2^32`: the sequence's last index is
+    /// `u32::MAX`, and it never wraps around to index 0.
+    #[inline]
+    pub fn fill_from(&self, start: u32, pattern: u32, out: &mut [Vec2]) {
+        check_fill_from(start, out.len());
+        fill_sequence::<Self>(Isa::best(), start, out, OwenSeeds::new(pattern));
     }
 }
 
