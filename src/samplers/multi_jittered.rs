@@ -1,7 +1,7 @@
 use glam::Vec2;
 
 use crate::primitives::{Permutation, derived_key, hash_u32, salt};
-use crate::sampler::{FillOn, SMALL_TABLE, Sampler2D, small_table};
+use crate::sampler::{FillOn, SMALL_TABLE, Sampler2D};
 use crate::samplers::grid::{Grid, GridPattern, Jitter, fill_grid};
 use crate::simd::Isa;
 use crate::{Error, SamplerKind};
@@ -135,22 +135,39 @@ impl LineShuffles for HashedLines {
     }
 }
 
-/// Every line's shuffle built once, for `fill` on sides up to
-/// [`SMALL_TABLE`].
-struct TabledLines {
-    columns: [Permutation; SMALL_TABLE],
-    rows: [Permutation; SMALL_TABLE],
+/// Every line's shuffle built once, for `fill` on sides up to `S` (a
+/// power of two: 16 for the sample counts renderers use, else
+/// [`SMALL_TABLE`]), so that a short set does not pay for a long table.
+struct TabledLines<const S: usize> {
+    columns: [Permutation; S],
+    rows: [Permutation; S],
 }
 
-impl LineShuffles for TabledLines {
+impl<const S: usize> TabledLines<S> {
+    fn new(hashed: &HashedLines) -> Self {
+        let mut tables = Self {
+            columns: [Permutation::default(); S],
+            rows: [Permutation::default(); S],
+        };
+        for (column, shuffle) in (0..hashed.columns).zip(&mut tables.columns) {
+            *shuffle = hashed.column(column);
+        }
+        for (row, shuffle) in (0..hashed.rows).zip(&mut tables.rows) {
+            *shuffle = hashed.row(row);
+        }
+        tables
+    }
+}
+
+impl<const S: usize> LineShuffles for TabledLines<S> {
     #[inline(always)]
     fn column(&self, column: u32) -> Permutation {
-        self.columns[column as usize % SMALL_TABLE]
+        self.columns[column as usize % S]
     }
 
     #[inline(always)]
     fn row(&self, row: u32) -> Permutation {
-        self.rows[row as usize % SMALL_TABLE]
+        self.rows[row as usize % S]
     }
 }
 
@@ -234,23 +251,26 @@ impl Sampler2D for MultiJittered {
 
 impl FillOn for MultiJittered {
     fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
-        let computed = self.pattern(pattern);
-        let (columns, rows) = (self.grid.columns(), self.grid.rows());
-        if columns as usize <= SMALL_TABLE && rows as usize <= SMALL_TABLE {
-            // There are only `columns + rows` shuffles, each built from a
-            // hash (and a Fisher-Yates shuffle for short sides): build them
-            // once and look them up.
-            let hashed = computed.shuffles;
-            let tabled = MultiJitteredPattern {
+        // There are only `columns + rows` shuffles, each built from a hash
+        // (and a Fisher-Yates shuffle for short sides): build them once and
+        // look them up.
+        fn tabled<'a, const S: usize>(
+            computed: &MultiJitteredPattern<'a, HashedLines>,
+        ) -> MultiJitteredPattern<'a, TabledLines<S>> {
+            MultiJitteredPattern {
                 grid: computed.grid,
                 order: computed.order,
-                shuffles: TabledLines {
-                    columns: small_table(columns, |column| hashed.column(column)),
-                    rows: small_table(rows, |row| hashed.row(row)),
-                },
+                shuffles: TabledLines::new(&computed.shuffles),
                 jitter: computed.jitter,
-            };
-            fill_grid(&tabled, isa, out);
+            }
+        }
+        let computed = self.pattern(pattern);
+        // `rows >= columns`: the longer side decides the table.
+        let rows = self.grid.rows() as usize;
+        if rows <= 16 {
+            fill_grid(&tabled::<16>(&computed), isa, out);
+        } else if rows <= SMALL_TABLE {
+            fill_grid(&tabled::<SMALL_TABLE>(&computed), isa, out);
         } else {
             fill_grid(&computed, isa, out);
         }
