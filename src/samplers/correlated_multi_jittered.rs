@@ -1,7 +1,7 @@
 use glam::Vec2;
 
 use crate::primitives::{Permutation, derived_key, hash_u32, salt};
-use crate::sampler::{FillOn, SMALL_TABLE, Sampler2D, small_table};
+use crate::sampler::{FillOn, SMALL_TABLE, small_table};
 use crate::samplers::grid::{Grid, GridPattern, Jitter, fill_grid};
 use crate::simd::Isa;
 use crate::{Error, SamplerKind};
@@ -68,32 +68,11 @@ pub struct CorrelatedMultiJittered {
     grid: Grid,
 }
 
-impl CorrelatedMultiJittered {
-    /// The largest `n` accepted: 2^24, the number of distinct f32 strata.
-    pub const MAX_SAMPLES: u32 = crate::primitives::MAX_STRATA;
+grid_constructors!(latin CorrelatedMultiJittered, CorrelatedMultiJittered, "correlated multi-jittered");
 
-    /// A correlated multi-jittered set of `n` points.
-    ///
-    /// # Errors
-    ///
-    /// [`Error::ZeroSamples`] for `n = 0`; [`Error::TooManySamples`] above
-    /// [`CorrelatedMultiJittered::MAX_SAMPLES`].
-    pub fn new(n: u32) -> Result<Self, Error> {
-        Grid::latin(SamplerKind::CorrelatedMultiJittered, n).map(|grid| Self { grid })
-    }
+grid_sampler!(CorrelatedMultiJittered);
 
-    /// Number of coarse grid columns.
-    #[must_use]
-    pub fn columns(&self) -> u32 {
-        self.grid.columns()
-    }
-
-    /// Number of coarse grid rows.
-    #[must_use]
-    pub fn rows(&self) -> u32 {
-        self.grid.rows()
-    }
-}
+impl CorrelatedMultiJittered {}
 
 /// One pattern of [`CorrelatedMultiJittered`]: the order of the cells, the
 /// two shared shuffles (`sub_columns`: of the rows, shared by every column;
@@ -176,22 +155,6 @@ impl CorrelatedMultiJittered {
             sub_rows: Permutation::new(grid.columns(), derived_key(seed, salt::SHUFFLE_Y)),
             jitter: Jitter::new(seed),
         }
-    }
-}
-
-impl Sampler2D for CorrelatedMultiJittered {
-    #[inline]
-    fn len(&self) -> u32 {
-        self.grid.len()
-    }
-
-    #[inline]
-    fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        self.pattern(pattern).point(index)
-    }
-
-    fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        self.fill_on(Isa::best(), pattern, out);
     }
 }
 

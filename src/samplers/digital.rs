@@ -8,7 +8,7 @@
 use glam::Vec2;
 
 use crate::primitives::{hash_u32, owen_scramble_reversed, salt, u32_to_unit_f32};
-use crate::simd::{self, Isa, PointKernel, Pointwise};
+use crate::simd::{PointKernel, Pointwise};
 
 /// Three independent seeds for a shuffled, Owen-scrambled 2D sequence: one
 /// for the index shuffle and one per coordinate.
@@ -55,24 +55,16 @@ pub(crate) const fn bits_to_point((x, y): (u32, u32)) -> Vec2 {
     Vec2::new(u32_to_unit_f32(x), u32_to_unit_f32(y))
 }
 
-/// `fill` for sequences whose point is `bits_to_point(point_bits(index,
-/// seeds))`: points `start, start + 1, ...` on instruction set `isa`. Every
-/// step of a point is a 32-bit integer operation on its own lane
-/// (multiplies, shifts, masks, bit reversals), so batches run in SIMD
-/// registers; the values are exactly those of `sample`, which calls the
-/// same `point_bits`.
+/// The points of a digital sequence `D` for the pattern whose seeds are
+/// `seeds`, as a lane kernel. Every step of a point is a 32-bit integer
+/// operation on its own lane (multiplies, shifts, masks, bit reversals), so
+/// batches run in SIMD registers.
 #[inline(always)]
-pub(crate) fn fill_sequence<D: DigitalSequence>(
-    isa: Isa,
-    start: u32,
-    out: &mut [Vec2],
-    seeds: OwenSeeds,
-) {
-    let kernel = Pointwise(SequenceKernel::<D> {
+pub(crate) fn sequence_kernel<D: DigitalSequence>(seeds: OwenSeeds) -> Pointwise<impl PointKernel> {
+    Pointwise(SequenceKernel::<D> {
         seeds,
         sequence: core::marker::PhantomData,
-    });
-    simd::fill_on(isa, &kernel, start, out);
+    })
 }
 
 /// A shuffled, Owen-scrambled digital (0,2)-sequence: its point formula.

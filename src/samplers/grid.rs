@@ -17,6 +17,107 @@ use crate::sampler::{check_fill_len, debug_check_index};
 use crate::simd::{self, Isa, Kernel};
 use crate::{Error, SamplerKind};
 
+/// Implements [`Sampler2D`](crate::Sampler2D) for the grid sampler `$name`
+/// (a struct with a `grid: Grid` field and a `pattern(pattern)` method
+/// returning its [`GridPattern`]), and with `fill_on` also the plain
+/// `FillOn` (samplers with tables write their own).
+macro_rules! grid_sampler {
+    ($name:ident) => {
+        impl $crate::Sampler2D for $name {
+            #[inline]
+            fn len(&self) -> u32 {
+                self.grid.len()
+            }
+
+            #[inline]
+            fn sample(&self, index: u32, pattern: u32) -> glam::Vec2 {
+                use $crate::samplers::grid::GridPattern;
+                self.pattern(pattern).point(index)
+            }
+
+            fn fill(&self, pattern: u32, out: &mut [glam::Vec2]) {
+                use $crate::sampler::FillOn;
+                self.fill_on($crate::simd::Isa::best(), pattern, out);
+            }
+        }
+    };
+    ($name:ident, fill_on) => {
+        grid_sampler!($name);
+
+        impl $crate::sampler::FillOn for $name {
+            fn fill_on(&self, isa: $crate::simd::Isa, pattern: u32, out: &mut [glam::Vec2]) {
+                $crate::samplers::grid::fill_grid(&self.pattern(pattern), isa, out);
+            }
+        }
+    };
+}
+
+/// The constructors and accessors of a grid sampler `$name` (a struct
+/// with one field `grid: Grid`) named `$kind`: `cells` for the samplers
+/// that stratify cells only (`new(n)` on the most square grid and
+/// `with_grid(columns, rows)`), `latin` for those that also cut each axis
+/// into `n` fine strata (`new(n)` and `MAX_SAMPLES`). `$what` names the
+/// points in the docs.
+macro_rules! grid_constructors {
+    (cells $name:ident, $kind:ident, $what:literal) => {
+        impl $name {
+            #[doc = concat!("`n` ", $what, " on the most square grid that has `n` cells.")]
+            ///
+            /// # Errors
+            ///
+            /// [`Error::ZeroSamples`] for `n = 0`; [`Error::GridTooFine`] when the
+            /// grid would have more than 2^24 rows (a prime above 2^24, or twice one).
+            pub fn new(n: u32) -> Result<Self, Error> {
+                Grid::most_square(SamplerKind::$kind, n).map(|grid| Self { grid })
+            }
+
+            #[doc = concat!($what, " of a `columns x rows` grid.")]
+            ///
+            /// # Errors
+            ///
+            /// [`Error::ZeroGridSide`] if either side is 0; [`Error::GridTooFine`]
+            /// if a side exceeds 2^24; [`Error::TooManySamples`] if `columns * rows`
+            /// exceeds `u32::MAX`.
+            pub fn with_grid(columns: u32, rows: u32) -> Result<Self, Error> {
+                Grid::with_sides(SamplerKind::$kind, columns, rows).map(|grid| Self { grid })
+            }
+
+            grid_constructors!(accessors);
+        }
+    };
+    (latin $name:ident, $kind:ident, $what:literal) => {
+        impl $name {
+            /// The largest `n` accepted: 2^24, the number of distinct f32 strata.
+            pub const MAX_SAMPLES: u32 = $crate::primitives::MAX_STRATA;
+
+            #[doc = concat!("A ", $what, " set of `n` points.")]
+            ///
+            /// # Errors
+            ///
+            /// [`Error::ZeroSamples`] for `n = 0`; [`Error::TooManySamples`] above
+            #[doc = concat!("[`", stringify!($name), "::MAX_SAMPLES`].")]
+            pub fn new(n: u32) -> Result<Self, Error> {
+                Grid::latin(SamplerKind::$kind, n).map(|grid| Self { grid })
+            }
+
+            grid_constructors!(accessors);
+        }
+    };
+    (accessors) => {
+        /// Number of coarse grid columns (strata along x).
+        #[must_use]
+        pub fn columns(&self) -> u32 {
+            self.grid.columns()
+        }
+
+        /// Number of coarse grid rows (strata along y).
+        #[must_use]
+        pub fn rows(&self) -> u32 {
+            self.grid.rows()
+        }
+    };
+}
+
 /// A `columns x rows` grid of `n = columns * rows` cells, each length
 /// stored with its reciprocal so that no sample divides.
 ///

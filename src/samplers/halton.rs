@@ -4,8 +4,8 @@ use crate::Error;
 use crate::primitives::{
     hash_combine, hash_u32, owen_scramble_reversed, salt, stratum_to_unit_f32, u32_to_unit_f32,
 };
-use crate::sampler::{FillOn, Sampler2D, check_fill_from, check_fill_len};
-use crate::simd::{self, Isa, PointKernel, Pointwise};
+use crate::sampler::Sampler2D;
+use crate::simd::{Kernel, PointKernel, Pointwise};
 
 /// Base-3 digits scrambled per sample: `3^15 = 14_348_907` strata, the most
 /// that fit in the `2^24` f32 strata of `[0, 1)`.
@@ -93,60 +93,13 @@ pub struct Halton {
     n: u32,
 }
 
+sequence_sampler!(Halton, "scrambled Halton");
+
 impl Halton {
-    /// A scrambled Halton sequence, with `n` as the set size for
-    /// [`fill`](Sampler2D::fill) and the tools.
-    ///
-    /// # Errors
-    ///
-    /// [`Error::ZeroSamples`] for `n = 0`.
-    pub fn new(n: u32) -> Result<Self, Error> {
-        if n == 0 {
-            return Err(Error::ZeroSamples);
-        }
-        Ok(Self { n })
-    }
-
-    /// The sequence with no set size: every index in `0..2^32` is valid
-    /// and [`len`](Sampler2D::len) is `u32::MAX`, so `fill` writes any
-    /// prefix. The same points as `Halton::new(n)` for every `n`: the size
-    /// only bounds [`fill`](Sampler2D::fill). Use it with
-    /// [`fill_from`](Self::fill_from) for progressive rendering.
-    ///
-    /// ```
-    /// use wellspread::{Halton, Sampler2D};
-    /// let sequence = Halton::unbounded();
-    /// assert_eq!(sequence.sample(1000, 3), Halton::new(16)?.sample(1000, 3));
-    /// // Render 16 samples, look, then add 16 more.
-    /// let mut points = vec![wellspread::glam::Vec2::ZERO; 32];
-    /// sequence.fill(3, &mut points[..16]);
-    /// sequence.fill_from(16, 3, &mut points[16..]);
-    /// assert_eq!(points[20], sequence.sample(20, 3));
-    /// # Ok::<(), wellspread::Error>(())
-    /// ```
-    #[must_use]
-    pub const fn unbounded() -> Self {
-        Self { n: u32::MAX }
-    }
-
-    /// Writes samples `start..start + out.len()` of pattern `pattern` into
-    /// `out`: exactly what [`sample`](Sampler2D::sample) returns for each
-    /// index, through the same batched path as [`fill`](Sampler2D::fill).
-    /// The set size does not bound it; only the end of the index range does.
-    ///
-    /// # Panics
-    ///
-    /// If `start + out.len()` exceeds `2^32`: the sequence's last index is
-    /// `u32::MAX`, and it never wraps around to index 0.
-    #[inline]
-    pub fn fill_from(&self, start: u32, pattern: u32, out: &mut [Vec2]) {
-        check_fill_from(start, out.len());
-        simd::fill_on(
-            Isa::best(),
-            &Pointwise(HaltonSeeds::new(pattern)),
-            start,
-            out,
-        );
+    /// The points of pattern `pattern`, as a lane kernel.
+    #[inline(always)]
+    fn kernel(pattern: u32) -> impl Kernel {
+        Pointwise(HaltonSeeds::new(pattern))
     }
 }
 
@@ -220,33 +173,6 @@ impl PointKernel for HaltonSeeds {
     #[inline(always)]
     fn point(&self, index: u32) -> Vec2 {
         halton_point(index, *self)
-    }
-}
-
-impl Sampler2D for Halton {
-    #[inline]
-    fn len(&self) -> u32 {
-        self.n
-    }
-
-    /// Sample `index` of pattern `pattern`; every `index` below `2^32` is
-    /// valid, including those at or above [`len`](Sampler2D::len).
-    #[inline]
-    fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        halton_point(index, HaltonSeeds::new(pattern))
-    }
-
-    #[inline]
-    fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        self.fill_on(Isa::best(), pattern, out);
-    }
-}
-
-impl FillOn for Halton {
-    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
-        check_fill_len(out.len(), self.n);
-        let seeds = HaltonSeeds::new(pattern);
-        simd::fill_on(isa, &Pointwise(seeds), 0, out);
     }
 }
 

@@ -1,9 +1,8 @@
 use glam::Vec2;
 
 use crate::primitives::{Permutation, derived_key, hash_u32, salt};
-use crate::sampler::{FillOn, Sampler2D};
-use crate::samplers::grid::{Grid, GridPattern, Jitter, fill_grid};
-use crate::simd::Isa;
+use crate::sampler::Sampler2D;
+use crate::samplers::grid::{Grid, GridPattern, Jitter};
 use crate::{Error, SamplerKind};
 
 /// One uniformly random point in each cell of a `columns x rows` grid
@@ -63,40 +62,11 @@ pub struct Jittered {
     grid: Grid,
 }
 
+grid_constructors!(cells Jittered, Jittered, "jittered points");
+
+grid_sampler!(Jittered, fill_on);
+
 impl Jittered {
-    /// `n` jittered points on the most square grid that has `n` cells.
-    ///
-    /// # Errors
-    ///
-    /// [`Error::ZeroSamples`] for `n = 0`; [`Error::GridTooFine`] when the
-    /// grid would have more than 2^24 rows (a prime above 2^24, or twice one).
-    pub fn new(n: u32) -> Result<Self, Error> {
-        Grid::most_square(SamplerKind::Jittered, n).map(|grid| Self { grid })
-    }
-
-    /// Jittered points on a `columns x rows` grid.
-    ///
-    /// # Errors
-    ///
-    /// [`Error::ZeroGridSide`] if either side is 0; [`Error::GridTooFine`]
-    /// if a side exceeds 2^24; [`Error::TooManySamples`] if `columns * rows`
-    /// exceeds `u32::MAX`.
-    pub fn with_grid(columns: u32, rows: u32) -> Result<Self, Error> {
-        Grid::with_sides(SamplerKind::Jittered, columns, rows).map(|grid| Self { grid })
-    }
-
-    /// Number of grid columns (strata along x).
-    #[must_use]
-    pub fn columns(&self) -> u32 {
-        self.grid.columns()
-    }
-
-    /// Number of grid rows (strata along y).
-    #[must_use]
-    pub fn rows(&self) -> u32 {
-        self.grid.rows()
-    }
-
     fn pattern(&self, pattern: u32) -> JitteredPattern<'_> {
         let seed = hash_u32(pattern);
         JitteredPattern {
@@ -133,27 +103,5 @@ impl GridPattern for JitteredPattern<'_> {
             );
         }
         out
-    }
-}
-
-impl Sampler2D for Jittered {
-    #[inline]
-    fn len(&self) -> u32 {
-        self.grid.len()
-    }
-
-    #[inline]
-    fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        self.pattern(pattern).point(index)
-    }
-
-    fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        self.fill_on(Isa::best(), pattern, out);
-    }
-}
-
-impl FillOn for Jittered {
-    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
-        fill_grid(&self.pattern(pattern), isa, out);
     }
 }

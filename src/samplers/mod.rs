@@ -1,9 +1,13 @@
 //! One file per sampler, and [`SamplerKind`] / [`AnySampler`] for choosing
 //! one by name at run time (tools, configuration files, command lines).
 
+#[macro_use]
+mod sequence;
+#[macro_use]
+mod grid;
+
 mod correlated_multi_jittered;
 mod digital;
-mod grid;
 mod halton;
 mod hammersley;
 mod jittered;

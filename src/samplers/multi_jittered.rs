@@ -68,32 +68,11 @@ pub struct MultiJittered {
     grid: Grid,
 }
 
-impl MultiJittered {
-    /// The largest `n` accepted: 2^24, the number of distinct f32 strata.
-    pub const MAX_SAMPLES: u32 = crate::primitives::MAX_STRATA;
+grid_constructors!(latin MultiJittered, MultiJittered, "multi-jittered");
 
-    /// A multi-jittered set of `n` points.
-    ///
-    /// # Errors
-    ///
-    /// [`Error::ZeroSamples`] for `n = 0`; [`Error::TooManySamples`] above
-    /// [`MultiJittered::MAX_SAMPLES`].
-    pub fn new(n: u32) -> Result<Self, Error> {
-        Grid::latin(SamplerKind::MultiJittered, n).map(|grid| Self { grid })
-    }
+grid_sampler!(MultiJittered);
 
-    /// Number of coarse grid columns.
-    #[must_use]
-    pub fn columns(&self) -> u32 {
-        self.grid.columns()
-    }
-
-    /// Number of coarse grid rows.
-    #[must_use]
-    pub fn rows(&self) -> u32 {
-        self.grid.rows()
-    }
-}
+impl MultiJittered {}
 
 /// One pattern of [`MultiJittered`]: the order of the cells, each coarse
 /// column's shuffle of its sub-columns and each coarse row's shuffle of its
@@ -230,22 +209,6 @@ impl MultiJittered {
             },
             jitter: Jitter::new(seed),
         }
-    }
-}
-
-impl Sampler2D for MultiJittered {
-    #[inline]
-    fn len(&self) -> u32 {
-        self.grid.len()
-    }
-
-    #[inline]
-    fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        self.pattern(pattern).point(index)
-    }
-
-    fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        self.fill_on(Isa::best(), pattern, out);
     }
 }
 

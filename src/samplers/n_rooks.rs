@@ -1,9 +1,8 @@
 use glam::Vec2;
 
 use crate::primitives::{MAX_STRATA, Permutation, derived_key, hash_u32, salt};
-use crate::sampler::{FillOn, Sampler2D};
-use crate::samplers::grid::{Grid, GridPattern, Jitter, fill_grid};
-use crate::simd::Isa;
+use crate::sampler::Sampler2D;
+use crate::samplers::grid::{Grid, GridPattern, Jitter};
 use crate::{Error, SamplerKind};
 
 /// N-rooks (Latin hypercube) sampling: one point in every row and every
@@ -58,6 +57,8 @@ pub struct NRooks {
     // Only `n` matters: the rook condition is on the n x n fine grid.
     grid: Grid,
 }
+
+grid_sampler!(NRooks, fill_on);
 
 /// The statisticians' name for the same set.
 pub type LatinHypercube = NRooks;
@@ -117,27 +118,5 @@ impl GridPattern for NRooksPattern<'_> {
             );
         }
         out
-    }
-}
-
-impl Sampler2D for NRooks {
-    #[inline]
-    fn len(&self) -> u32 {
-        self.grid.len()
-    }
-
-    #[inline]
-    fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        self.pattern(pattern).point(index)
-    }
-
-    fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        self.fill_on(Isa::best(), pattern, out);
-    }
-}
-
-impl FillOn for NRooks {
-    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
-        fill_grid(&self.pattern(pattern), isa, out);
     }
 }

@@ -1,9 +1,8 @@
 use glam::Vec2;
 
 use crate::primitives::{Permutation, derived_key, hash_u32, salt};
-use crate::sampler::{FillOn, Sampler2D};
-use crate::samplers::grid::{Grid, GridPattern, fill_grid};
-use crate::simd::Isa;
+use crate::sampler::Sampler2D;
+use crate::samplers::grid::{Grid, GridPattern};
 use crate::{Error, SamplerKind};
 
 /// Cell centres of a `columns x rows` grid: the deterministic baseline that
@@ -57,40 +56,11 @@ pub struct Regular {
     grid: Grid,
 }
 
+grid_constructors!(cells Regular, Regular, "cell centres");
+
+grid_sampler!(Regular, fill_on);
+
 impl Regular {
-    /// `n` cell centres on the most square grid that has `n` cells.
-    ///
-    /// # Errors
-    ///
-    /// [`Error::ZeroSamples`] for `n = 0`; [`Error::GridTooFine`] when the
-    /// grid would have more than 2^24 rows (a prime above 2^24, or twice one).
-    pub fn new(n: u32) -> Result<Self, Error> {
-        Grid::most_square(SamplerKind::Regular, n).map(|grid| Self { grid })
-    }
-
-    /// Cell centres of a `columns x rows` grid.
-    ///
-    /// # Errors
-    ///
-    /// [`Error::ZeroGridSide`] if either side is 0; [`Error::GridTooFine`]
-    /// if a side exceeds 2^24; [`Error::TooManySamples`] if `columns * rows`
-    /// exceeds `u32::MAX`.
-    pub fn with_grid(columns: u32, rows: u32) -> Result<Self, Error> {
-        Grid::with_sides(SamplerKind::Regular, columns, rows).map(|grid| Self { grid })
-    }
-
-    /// Number of grid columns.
-    #[must_use]
-    pub fn columns(&self) -> u32 {
-        self.grid.columns()
-    }
-
-    /// Number of grid rows.
-    #[must_use]
-    pub fn rows(&self) -> u32 {
-        self.grid.rows()
-    }
-
     fn pattern(&self, pattern: u32) -> RegularPattern<'_> {
         RegularPattern {
             grid: &self.grid,
@@ -124,27 +94,5 @@ impl GridPattern for RegularPattern<'_> {
             );
         }
         out
-    }
-}
-
-impl Sampler2D for Regular {
-    #[inline]
-    fn len(&self) -> u32 {
-        self.grid.len()
-    }
-
-    #[inline]
-    fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        self.pattern(pattern).point(index)
-    }
-
-    fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        self.fill_on(Isa::best(), pattern, out);
-    }
-}
-
-impl FillOn for Regular {
-    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
-        fill_grid(&self.pattern(pattern), isa, out);
     }
 }

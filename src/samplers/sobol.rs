@@ -2,11 +2,9 @@ use glam::Vec2;
 
 use crate::Error;
 use crate::primitives::owen_scramble;
-use crate::sampler::{FillOn, Sampler2D, check_fill_from, check_fill_len};
-use crate::samplers::digital::{
-    DigitalSequence, OwenSeeds, bits_to_point, fill_sequence, scrambled_bits,
-};
-use crate::simd::Isa;
+use crate::sampler::Sampler2D;
+use crate::samplers::digital::{DigitalSequence, OwenSeeds, scrambled_bits, sequence_kernel};
+use crate::simd::Kernel;
 
 /// The first two dimensions of the Sobol sequence, Owen-scrambled with
 /// Burley's hash and shuffled: a randomised base-2 (0,2)-sequence.
@@ -119,55 +117,13 @@ pub struct Sobol {
     n: u32,
 }
 
+sequence_sampler!(Sobol, "Owen-scrambled Sobol");
+
 impl Sobol {
-    /// An Owen-scrambled Sobol sequence, with `n` as the set size for
-    /// [`fill`](Sampler2D::fill) and the tools.
-    ///
-    /// # Errors
-    ///
-    /// [`Error::ZeroSamples`] for `n = 0`.
-    pub fn new(n: u32) -> Result<Self, Error> {
-        if n == 0 {
-            return Err(Error::ZeroSamples);
-        }
-        Ok(Self { n })
-    }
-
-    /// The sequence with no set size: every index in `0..2^32` is valid
-    /// and [`len`](Sampler2D::len) is `u32::MAX`, so `fill` writes any
-    /// prefix. The same points as `Sobol::new(n)` for every `n`: the size
-    /// only bounds [`fill`](Sampler2D::fill). Use it with
-    /// [`fill_from`](Self::fill_from) for progressive rendering.
-    ///
-    /// ```
-    /// use wellspread::{Sobol, Sampler2D};
-    /// let sequence = Sobol::unbounded();
-    /// assert_eq!(sequence.sample(1000, 3), Sobol::new(16)?.sample(1000, 3));
-    /// // Render 16 samples, look, then add 16 more.
-    /// let mut points = vec![wellspread::glam::Vec2::ZERO; 32];
-    /// sequence.fill(3, &mut points[..16]);
-    /// sequence.fill_from(16, 3, &mut points[16..]);
-    /// assert_eq!(points[20], sequence.sample(20, 3));
-    /// # Ok::<(), wellspread::Error>(())
-    /// ```
-    #[must_use]
-    pub const fn unbounded() -> Self {
-        Self { n: u32::MAX }
-    }
-
-    /// Writes samples `start..start + out.len()` of pattern `pattern` into
-    /// `out`: exactly what [`sample`](Sampler2D::sample) returns for each
-    /// index, through the same batched path as [`fill`](Sampler2D::fill).
-    /// The set size does not bound it; only the end of the index range does.
-    ///
-    /// # Panics
-    ///
-    /// If `start + out.len()` exceeds `2^32`: the sequence's last index is
-    /// `u32::MAX`, and it never wraps around to index 0.
-    #[inline]
-    pub fn fill_from(&self, start: u32, pattern: u32, out: &mut [Vec2]) {
-        check_fill_from(start, out.len());
-        fill_sequence::<Self>(Isa::best(), start, out, OwenSeeds::new(pattern));
+    /// The points of pattern `pattern`, as a lane kernel.
+    #[inline(always)]
+    fn kernel(pattern: u32) -> impl Kernel {
+        sequence_kernel::<Self>(OwenSeeds::new(pattern))
     }
 }
 
@@ -201,32 +157,6 @@ impl DigitalSequence for Sobol {
         let s = owen_scramble(index, seeds.index);
         // Dimension 0's generator is the identity: its reversed digits are `s`.
         scrambled_bits(s, pascal_reversed(s), seeds)
-    }
-}
-
-impl Sampler2D for Sobol {
-    #[inline]
-    fn len(&self) -> u32 {
-        self.n
-    }
-
-    /// Sample `index` of pattern `pattern`; every `index` below `2^32` is
-    /// valid, including those at or above [`len`](Sampler2D::len).
-    #[inline]
-    fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        bits_to_point(Self::point_bits(index, OwenSeeds::new(pattern)))
-    }
-
-    #[inline]
-    fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        self.fill_on(Isa::best(), pattern, out);
-    }
-}
-
-impl FillOn for Sobol {
-    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
-        check_fill_len(out.len(), self.n);
-        fill_sequence::<Self>(isa, 0, out, OwenSeeds::new(pattern));
     }
 }
 
