@@ -41,13 +41,13 @@ use crate::Error;
 /// subtree) plus a re-evaluation of O(log n) ancestors; advancing `a`
 /// re-evaluates only nodes whose certificate expired. The amortised bound
 /// known for kinetic segment trees is O(log² n) per update, i.e. O(n log² n)
-/// time in all, with O(n) memory; the measured scaling agrees (2^16 to 2^20
-/// points: 25 to 28 times the time for 16 times the points; n log² n predicts 25).
+/// time in all, with O(n) memory; the measured scaling agrees (16 times the
+/// points take 25 to 28 times as long from 2^16 to 2^20; n log² n predicts 25).
 /// The leaves are buckets of 32 lines that keep their own upper hull, which
-/// keeps the tree small enough for the cache. Measured: about 0.11 s at
-/// n = 2^16 and 3.0 s at n = 2^20 on one core of a shared 2-core machine, for
-/// uniform random points; structured sets (grids, diagonals, Hammersley) take
-/// no longer. Results are exact up to one f64 rounding per candidate box.
+/// keeps the tree small enough for the cache. Structured sets (grids,
+/// diagonals, Hammersley) take no longer than uniform random ones; timings
+/// are in `docs/metrics.md`. Results are exact up to one f64 rounding per
+/// candidate box.
 ///
 /// Dobkin, Eppstein & Mitchell 1996 give the classic O(n²) 2D algorithm (and
 /// the critical-box argument); the kinetic tree replaces their per-column scan.

@@ -145,6 +145,7 @@ impl<S: Shuffle> GridPattern for CorrelatedMultiJitteredPattern<'_, S> {
 impl CorrelatedMultiJittered {
     /// The pattern with its three permutations; keys from one hash of the
     /// pattern by three cheap derivations.
+    #[inline(always)]
     fn pattern(&self, pattern: u32) -> CorrelatedMultiJitteredPattern<'_, Permutation> {
         let seed = hash_u32(pattern);
         let grid = &self.grid;

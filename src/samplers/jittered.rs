@@ -67,6 +67,7 @@ grid_constructors!(cells Jittered, Jittered, "jittered points");
 grid_sampler!(Jittered, fill_on);
 
 impl Jittered {
+    #[inline(always)]
     fn pattern(&self, pattern: u32) -> JitteredPattern<'_> {
         let seed = hash_u32(pattern);
         JitteredPattern {

@@ -196,6 +196,7 @@ const fn line_key(seed: u32, line: u32) -> u32 {
 }
 
 impl MultiJittered {
+    #[inline(always)]
     fn pattern(&self, pattern: u32) -> MultiJitteredPattern<'_, HashedLines> {
         let seed = hash_u32(pattern);
         MultiJitteredPattern {

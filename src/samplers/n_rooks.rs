@@ -77,6 +77,7 @@ impl NRooks {
         Grid::latin(SamplerKind::NRooks, n).map(|grid| Self { grid })
     }
 
+    #[inline(always)]
     fn pattern(&self, pattern: u32) -> NRooksPattern<'_> {
         let seed = hash_u32(pattern);
         NRooksPattern {

@@ -24,13 +24,9 @@ use crate::simd::Kernel;
 /// (0,2)-sequence rank condition for every `m <= 32`.) wellspread computes
 /// that digital sequence directly:
 ///
-/// - From `x (x + 1) ... (x + n - 1) = sum_k c(n, k) x^k` and
-///   `x (x + 1) = x^2 + x` mod 2, column `j` of `C0` is the polynomial
-///   `x^ceil(j/2) (1 + x)^floor(j/2)`. Splitting the index into even and odd
-///   bits, the coordinate's digit polynomial is `E(x + x^2) + x O(x + x^2)`,
-///   a composition that four masked xor-shift steps evaluate for all 32
-///   digits at once (see `stirling_x` in the source). Column `j` of
-///   `C1` is column `j + 1` of `C0` shifted down one digit.
+/// - The generator matrices are evaluated for all 32 digits at once by a
+///   few masked xor-shift steps, with no loop and no table; the derivation
+///   is on `stirling_x` in the source.
 /// - The index is shuffled and the coordinates Owen-scrambled exactly as in
 ///   [`Sobol`](crate::Sobol) (Burley 2020), so dimension pairs decorrelate
 ///   the same way: hash the pair into the pattern with

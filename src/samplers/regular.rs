@@ -61,6 +61,7 @@ grid_constructors!(cells Regular, Regular, "cell centres");
 grid_sampler!(Regular, fill_on);
 
 impl Regular {
+    #[inline(always)]
     fn pattern(&self, pattern: u32) -> RegularPattern<'_> {
         RegularPattern {
             grid: &self.grid,
