@@ -5,7 +5,7 @@ use crate::primitives::{
     hash_combine, hash_u32, owen_scramble_reversed, salt, stratum_to_unit_f32, u32_to_unit_f32,
 };
 use crate::sampler::Sampler2D;
-use crate::simd::{Kernel, PointKernel, Pointwise};
+use crate::simd::Kernel;
 
 /// Base-3 digits scrambled per sample: `3^15 = 14_348_907` strata, the most
 /// that fit in the `2^24` f32 strata of `[0, 1)`.
@@ -99,7 +99,7 @@ impl Halton {
     /// The points of pattern `pattern`, as a lane kernel.
     #[inline(always)]
     fn kernel(pattern: u32) -> impl Kernel {
-        Pointwise(HaltonSeeds::new(pattern))
+        HaltonSeeds::new(pattern)
     }
 }
 
@@ -120,31 +120,35 @@ impl HaltonSeeds {
     }
 }
 
-/// Owen-scrambled base-3 radical inverse of `index` as a float.
+/// Owen-scrambled base-3 radical inverses of `index[lane]` as floats, one
+/// lane each, with seed `seed`: the digit loop outside, the lanes inside,
+/// so that a batch runs in SIMD registers.
 #[inline(always)]
-fn scrambled_radical_inverse_3(index: u32, seed: u32) -> f32 {
+fn scrambled_radical_inverse_3<const N: usize>(index: [u32; N], seed: u32) -> [f32; N] {
     let mut rest = index;
-    let mut stratum = 0u32;
+    let mut stratum = [0u32; N];
     // The node of the digit tree above digit k is named by the level k and
     // the value of digits 0..k, `prefix = index mod 3^k`; hashing the pair
     // picks the permutation of digit k, so it depends on those digits only
     // (the nested scramble). Unlike a hash chained from node to node, the
     // fifteen hashes are independent and run in parallel.
-    let mut prefix = 0u32;
+    let mut prefix = [0u32; N];
     let mut weight = 1u32;
     let mut level_seed = seed;
     for _ in 0..BASE3_DIGITS {
-        let digit = rest % 3;
-        rest /= 3;
-        let h = hash_u32(prefix ^ level_seed);
-        // One of the six permutations of {0, 1, 2}: reflect if the top bit
-        // is set, then rotate by a value in 0..3 from the other bits (a
-        // multiply-shift, bias below 2^-30).
-        let reflected = if h >> 31 == 1 { 2 - digit } else { digit };
-        let rotation = (((h << 1) as u64 * 3) >> 32) as u32;
-        stratum = stratum * 3 + (reflected + rotation) % 3;
-        // prefix < 3^15 and weight <= 3^15: no overflow.
-        prefix += digit * weight;
+        for lane in 0..N {
+            let digit = rest[lane] % 3;
+            rest[lane] /= 3;
+            let h = hash_u32(prefix[lane] ^ level_seed);
+            // One of the six permutations of {0, 1, 2}: reflect if the top
+            // bit is set, then rotate by a value in 0..3 from the other bits
+            // (a multiply-shift, bias below 2^-30).
+            let reflected = if h >> 31 == 1 { 2 - digit } else { digit };
+            let rotation = (((h << 1) as u64 * 3) >> 32) as u32;
+            stratum[lane] = stratum[lane] * 3 + (reflected + rotation) % 3;
+            // prefix < 3^15 and weight <= 3^15: no overflow.
+            prefix[lane] += digit * weight;
+        }
         weight *= 3;
         // A new seed per level (the golden-ratio step, odd and with about
         // half its bits set), so equal prefixes of different lengths differ.
@@ -152,27 +156,29 @@ fn scrambled_radical_inverse_3(index: u32, seed: u32) -> f32 {
     }
     // The remaining index digits and the pattern pick the position inside
     // the finest stratum.
-    stratum_to_unit_f32(
-        stratum,
-        BASE3_STRATA,
-        hash_combine(hash_u32(prefix ^ level_seed), rest),
-    )
+    let mut y = [0.0; N];
+    for lane in 0..N {
+        y[lane] = stratum_to_unit_f32(
+            stratum[lane],
+            BASE3_STRATA,
+            hash_combine(hash_u32(prefix[lane] ^ level_seed), rest[lane]),
+        );
+    }
+    y
 }
 
-#[inline(always)]
-fn halton_point(index: u32, seeds: HaltonSeeds) -> Vec2 {
-    // In reversed bit order the base-2 radical inverse of `index` is `index`.
-    let x = owen_scramble_reversed(index, seeds.x).reverse_bits();
-    Vec2::new(
-        u32_to_unit_f32(x),
-        scrambled_radical_inverse_3(index, seeds.y),
-    )
-}
-
-impl PointKernel for HaltonSeeds {
+impl Kernel for HaltonSeeds {
     #[inline(always)]
-    fn point(&self, index: u32) -> Vec2 {
-        halton_point(index, *self)
+    fn points<const N: usize>(&self, index: [u32; N]) -> [Vec2; N] {
+        let y = scrambled_radical_inverse_3(index, self.y);
+        let mut out = [Vec2::ZERO; N];
+        for (lane, point) in out.iter_mut().enumerate() {
+            // In reversed bit order the base-2 radical inverse of `index` is
+            // `index`.
+            let x = owen_scramble_reversed(index[lane], self.x).reverse_bits();
+            *point = Vec2::new(u32_to_unit_f32(x), y[lane]);
+        }
+        out
     }
 }
 
@@ -194,7 +200,7 @@ mod tests {
         for start in [0, 1, 5, 1000, u32::MAX - 27] {
             let mut seen = [false; 27];
             for i in start..start + 27 {
-                let y = scrambled_radical_inverse_3(i, 12345);
+                let [y] = scrambled_radical_inverse_3([i], 12345);
                 seen[(y as f64 * 27.0) as usize] = true;
             }
             assert!(seen.iter().all(|&s| s), "start {start}");
