@@ -822,9 +822,17 @@ fn zsobol_versus_sobol(rows: &[Row]) -> Option<String> {
         "#### zsobol / sobol\n\n| scene | spp | seeds | blurred RMSE ratio | RMSE ratio | low-frequency power ratio |\n| --- | ---: | ---: | ---: | ---: | ---: |\n",
     );
     for (z, s) in pairs {
+        // A film too small for a spectrum (the 5 x 7 polygon) has no
+        // low-frequency power: "-" rather than NaN.
+        let low = z.low_power / s.low_power;
+        let low = if low.is_finite() {
+            format!("{low:.3}")
+        } else {
+            "-".to_owned()
+        };
         let _ = writeln!(
             text,
-            "| {} {}x{} | {} | {} | {:.3} | {:.3} | {:.3} |",
+            "| {} {}x{} | {} | {} | {:.3} | {:.3} | {low} |",
             z.scene,
             z.width,
             z.height,
@@ -832,9 +840,9 @@ fn zsobol_versus_sobol(rows: &[Row]) -> Option<String> {
             z.seeds,
             z.blurred_rmse / s.blurred_rmse,
             z.rmse / s.rmse,
-            z.low_power / s.low_power
         );
     }
+    text += "\n\"-\": the film is too small for an error spectrum.\n";
     Some(text)
 }
 
@@ -844,13 +852,18 @@ fn json_report(rows: &[Row]) -> String {
         .iter()
         .map(|r| {
             format!(
-                r#"  {{"scene": "{}", "sampler": "{}", "spp": {}, "rmse": {:e}, "blurred_rmse": {:e}, "low_frequency_power": {:e}, "seconds": {:e}, "seeds": {}, "width": {}, "height": {}}}"#,
+                r#"  {{"scene": "{}", "sampler": "{}", "spp": {}, "rmse": {:e}, "blurred_rmse": {:e}, "low_frequency_power": {}, "seconds": {:e}, "seeds": {}, "width": {}, "height": {}}}"#,
                 r.scene,
                 r.sampler.name(),
                 r.spp,
                 r.rmse,
                 r.blurred_rmse,
-                r.low_power,
+                // JSON has no NaN: a film too small for a spectrum is null.
+                if r.low_power.is_finite() {
+                    format!("{:e}", r.low_power)
+                } else {
+                    "null".to_owned()
+                },
                 r.seconds,
                 r.seeds,
                 r.width,
