@@ -246,16 +246,74 @@ pub struct Series<'a> {
     pub points: Vec<(u32, f64, f64)>,
 }
 
+/// The layout both plots share: the canvas, and the plot area inside its
+/// margins (the right one holds the legend).
+const WIDTH: f64 = 760.0;
+const HEIGHT: f64 = 480.0;
+const LEFT: f64 = 70.0;
+const RIGHT: f64 = 230.0;
+const TOP: f64 = 40.0;
+const BOTTOM: f64 = 50.0;
+
+/// An SVG of the shared layout, opened, on white, with its title.
+fn svg_start(title: &str) -> String {
+    let plot_w = WIDTH - LEFT - RIGHT;
+    let mut svg = String::new();
+    let _ = writeln!(
+        svg,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH}" height="{HEIGHT}" viewBox="0 0 {WIDTH} {HEIGHT}" font-family="sans-serif" font-size="12">"#
+    );
+    let _ = writeln!(svg, r#"<rect width="100%" height="100%" fill="white"/>"#);
+    let _ = writeln!(
+        svg,
+        r#"<text x="{}" y="22" text-anchor="middle" font-size="15">{}</text>"#,
+        LEFT + plot_w / 2.0,
+        escape(title)
+    );
+    svg
+}
+
+/// The decade grid of a log y axis from `10^lo` to `10^hi` (`sy` maps a
+/// value to its y), the plot frame, and both axis labels.
+fn log_y_axis_and_frame(
+    svg: &mut String,
+    (y_lo, y_hi): (f64, f64),
+    sy: impl Fn(f64) -> f64,
+    x_label: &str,
+    y_label: &str,
+) {
+    let (plot_w, plot_h) = (WIDTH - LEFT - RIGHT, HEIGHT - TOP - BOTTOM);
+    for decade in y_lo as i32..=y_hi as i32 {
+        let y = sy(10f64.powi(decade));
+        let _ = writeln!(
+            svg,
+            r##"<line x1="{LEFT}" y1="{y:.1}" x2="{:.1}" y2="{y:.1}" stroke="#ddd"/><text x="{:.1}" y="{:.1}" text-anchor="end">1e{decade}</text>"##,
+            LEFT + plot_w,
+            LEFT - 6.0,
+            y + 4.0
+        );
+    }
+    let _ = writeln!(
+        svg,
+        r##"<rect x="{LEFT}" y="{TOP}" width="{plot_w}" height="{plot_h}" fill="none" stroke="#444"/>"##
+    );
+    let _ = writeln!(
+        svg,
+        r#"<text x="{:.1}" y="{:.1}" text-anchor="middle">{x_label}</text>"#,
+        LEFT + plot_w / 2.0,
+        HEIGHT - 10.0
+    );
+    let _ = writeln!(
+        svg,
+        r#"<text transform="translate(16 {:.1}) rotate(-90)" text-anchor="middle">{y_label}</text>"#,
+        TOP + plot_h / 2.0
+    );
+}
+
 /// A log-log plot of RMSE against seconds per frame, one polyline per
 /// sampler: lower-left is better, and a line's slope is the convergence
 /// rate measured in time rather than samples.
 pub fn trade_plot_svg(title: &str, series: &[Series<'_>], target: f64) -> String {
-    const WIDTH: f64 = 760.0;
-    const HEIGHT: f64 = 480.0;
-    const LEFT: f64 = 70.0;
-    const RIGHT: f64 = 230.0; // room for the legend
-    const TOP: f64 = 40.0;
-    const BOTTOM: f64 = 50.0;
     // Tiny times and errors are clamped so log10 stays finite.
     let positive = |v: f64| v.max(1e-9);
     let all = || series.iter().flat_map(|s| &s.points);
@@ -283,18 +341,7 @@ pub fn trade_plot_svg(title: &str, series: &[Series<'_>], target: f64) -> String
     let sx = |seconds: f64| LEFT + (positive(seconds).log10() - x_lo) / (x_hi - x_lo) * plot_w;
     let sy = |rmse: f64| TOP + (y_hi - positive(rmse).log10()) / (y_hi - y_lo) * plot_h;
 
-    let mut svg = String::new();
-    let _ = writeln!(
-        svg,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH}" height="{HEIGHT}" viewBox="0 0 {WIDTH} {HEIGHT}" font-family="sans-serif" font-size="12">"#
-    );
-    let _ = writeln!(svg, r#"<rect width="100%" height="100%" fill="white"/>"#);
-    let _ = writeln!(
-        svg,
-        r#"<text x="{}" y="22" text-anchor="middle" font-size="15">{}</text>"#,
-        LEFT + plot_w / 2.0,
-        escape(title)
-    );
+    let mut svg = svg_start(title);
     // Decade grid lines and labels.
     for decade in x_lo as i32..=x_hi as i32 {
         let x = sx(10f64.powi(decade));
@@ -305,30 +352,12 @@ pub fn trade_plot_svg(title: &str, series: &[Series<'_>], target: f64) -> String
             TOP + plot_h + 18.0
         );
     }
-    for decade in y_lo as i32..=y_hi as i32 {
-        let y = sy(10f64.powi(decade));
-        let _ = writeln!(
-            svg,
-            r##"<line x1="{LEFT}" y1="{y:.1}" x2="{:.1}" y2="{y:.1}" stroke="#ddd"/><text x="{:.1}" y="{:.1}" text-anchor="end">1e{decade}</text>"##,
-            LEFT + plot_w,
-            LEFT - 6.0,
-            y + 4.0
-        );
-    }
-    let _ = writeln!(
-        svg,
-        r##"<rect x="{LEFT}" y="{TOP}" width="{plot_w}" height="{plot_h}" fill="none" stroke="#444"/>"##
-    );
-    let _ = writeln!(
-        svg,
-        r#"<text x="{:.1}" y="{:.1}" text-anchor="middle">seconds per frame (log)</text>"#,
-        LEFT + plot_w / 2.0,
-        HEIGHT - 10.0
-    );
-    let _ = writeln!(
-        svg,
-        r#"<text transform="translate(16 {:.1}) rotate(-90)" text-anchor="middle">RMSE vs reference (log)</text>"#,
-        TOP + plot_h / 2.0
+    log_y_axis_and_frame(
+        &mut svg,
+        (y_lo, y_hi),
+        sy,
+        "seconds per frame (log)",
+        "RMSE vs reference (log)",
     );
     // The target RMSE the table's "to reach" columns use.
     let ty = sy(target);
@@ -386,12 +415,6 @@ pub fn trade_plot_svg(title: &str, series: &[Series<'_>], target: f64) -> String
 /// left) against power on a log scale. `series` holds (name, bins), bin `k`
 /// of `n` centred at `(k + 1/2) 0.5 / n`.
 pub fn spectrum_svg(title: &str, series: &[(&str, Vec<f64>)]) -> String {
-    const WIDTH: f64 = 760.0;
-    const HEIGHT: f64 = 480.0;
-    const LEFT: f64 = 70.0;
-    const RIGHT: f64 = 230.0;
-    const TOP: f64 = 40.0;
-    const BOTTOM: f64 = 50.0;
     let values = || {
         series
             .iter()
@@ -413,18 +436,7 @@ pub fn spectrum_svg(title: &str, series: &[(&str, Vec<f64>)]) -> String {
     let plot_h = HEIGHT - TOP - BOTTOM;
     let sx = |f: f64| LEFT + f / 0.5 * plot_w;
     let sy = |p: f64| TOP + (y_hi - p.max(1e-30).log10()) / (y_hi - y_lo) * plot_h;
-    let mut svg = String::new();
-    let _ = writeln!(
-        svg,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH}" height="{HEIGHT}" viewBox="0 0 {WIDTH} {HEIGHT}" font-family="sans-serif" font-size="12">"#
-    );
-    let _ = writeln!(svg, r#"<rect width="100%" height="100%" fill="white"/>"#);
-    let _ = writeln!(
-        svg,
-        r#"<text x="{}" y="22" text-anchor="middle" font-size="15">{}</text>"#,
-        LEFT + plot_w / 2.0,
-        escape(title)
-    );
+    let mut svg = svg_start(title);
     for tick in 0..=5 {
         let f = f64::from(tick) * 0.1;
         let x = sx(f);
@@ -435,30 +447,12 @@ pub fn spectrum_svg(title: &str, series: &[(&str, Vec<f64>)]) -> String {
             TOP + plot_h + 18.0
         );
     }
-    for decade in y_lo as i32..=y_hi as i32 {
-        let y = sy(10f64.powi(decade));
-        let _ = writeln!(
-            svg,
-            r##"<line x1="{LEFT}" y1="{y:.1}" x2="{:.1}" y2="{y:.1}" stroke="#ddd"/><text x="{:.1}" y="{:.1}" text-anchor="end">1e{decade}</text>"##,
-            LEFT + plot_w,
-            LEFT - 6.0,
-            y + 4.0
-        );
-    }
-    let _ = writeln!(
-        svg,
-        r##"<rect x="{LEFT}" y="{TOP}" width="{plot_w}" height="{plot_h}" fill="none" stroke="#444"/>"##
-    );
-    let _ = writeln!(
-        svg,
-        r#"<text x="{:.1}" y="{:.1}" text-anchor="middle">frequency (cycles per pixel, radially averaged)</text>"#,
-        LEFT + plot_w / 2.0,
-        HEIGHT - 10.0
-    );
-    let _ = writeln!(
-        svg,
-        r#"<text transform="translate(16 {:.1}) rotate(-90)" text-anchor="middle">error power (log)</text>"#,
-        TOP + plot_h / 2.0
+    log_y_axis_and_frame(
+        &mut svg,
+        (y_lo, y_hi),
+        sy,
+        "frequency (cycles per pixel, radially averaged)",
+        "error power (log)",
     );
     for (i, (name, bins)) in series.iter().enumerate() {
         let colour = PALETTE[i % PALETTE.len()];
