@@ -109,7 +109,8 @@ impl Isa {
 }
 
 /// Writes `kernel`'s points `start, start + 1, ...` into `out` on
-/// instruction set `isa`, or on the portable loop if the CPU lacks it. Callers keep `start + out.len() <= 2^32`.
+/// instruction set `isa`, or on the portable loop if the CPU lacks it.
+/// Callers keep `start + out.len() <= 2^32`.
 pub(crate) fn fill_on<K: Kernel>(isa: Isa, kernel: &K, start: u32, out: &mut [Vec2]) {
     debug_assert!(start as u64 + out.len() as u64 <= 1 << 32);
     #[cfg(all(feature = "std", any(target_arch = "x86", target_arch = "x86_64")))]
@@ -126,7 +127,9 @@ pub(crate) fn fill_on<K: Kernel>(isa: Isa, kernel: &K, start: u32, out: &mut [Ve
             return;
         }
         Isa::Avx2 if Isa::Avx2.is_supported() => {
-            // SAFETY: as above, for AVX2, detected just above.
+            // SAFETY: `fill_avx2` only requires that the CPU supports AVX2,
+            // the target feature it is compiled with, which `is_supported`
+            // has just detected at run time. It does nothing else unsafe.
             #[allow(unsafe_code)]
             unsafe {
                 fill_avx2(kernel, start, out);
