@@ -77,9 +77,9 @@ pub(crate) const SMALL_TABLE: usize = 256;
 /// entries (`len <= SMALL_TABLE`), for the per-row and per-column work a
 /// `fill` hoists out of its loop.
 #[inline(always)]
-pub(crate) fn small_table<T: Copy + Default>(len: u32, f: impl Fn(u32) -> T) -> [T; SMALL_TABLE] {
+pub(crate) fn small_table(len: u32, f: impl Fn(u32) -> u32) -> [u32; SMALL_TABLE] {
     debug_assert!(len as usize <= SMALL_TABLE);
-    let mut table = [T::default(); SMALL_TABLE];
+    let mut table = [0; SMALL_TABLE];
     for (i, entry) in (0..len).zip(table.iter_mut()) {
         *entry = f(i);
     }

@@ -119,26 +119,13 @@ impl<S: Shuffle> GridPattern for CorrelatedMultiJitteredPattern<'_, S> {
 
     #[inline(always)]
     fn points<const POW2: bool, const N: usize>(&self, index: [u32; N]) -> [Vec2; N] {
-        let grid = self.grid;
         let cell = self.order.apply_lanes(index);
-        let (mut row, mut column) = ([0; N], [0; N]);
-        for lane in 0..N {
-            (row[lane], column[lane]) = grid.cell::<POW2>(cell[lane]);
-        }
+        let (row, column) = self.grid.cells::<POW2, N>(cell);
         // One shuffle for all columns, one for all rows: Kensler's
         // correlation.
-        let sub_column = self.sub_columns.shuffle(row);
-        let sub_row = self.sub_rows.shuffle(column);
-        let mut out = [Vec2::ZERO; N];
-        for (lane, point) in out.iter_mut().enumerate() {
-            *point = grid.latin_point::<POW2>(
-                cell[lane],
-                (row[lane], column[lane]),
-                (sub_column[lane], sub_row[lane]),
-                &self.jitter,
-            );
-        }
-        out
+        let sub = (self.sub_columns.shuffle(row), self.sub_rows.shuffle(column));
+        self.grid
+            .latin_points::<POW2, N>(cell, (row, column), sub, &self.jitter)
     }
 }
 

@@ -226,26 +226,62 @@ impl Grid {
         self.columns.div_rem_in::<POW2>(cell)
     }
 
-    /// The point of a Latin grid sampler (multi-jittered, correlated
-    /// multi-jittered) in cell `cell` at `(row, column)`, in the fine column
-    /// `column * rows + sub_column` and fine row `row * columns + sub_row`
-    /// that the sampler's shuffles picked, jittered uniformly inside that
-    /// fine cell.
+    /// [`cell`](Self::cell) of every lane: `(rows, columns)`.
     #[inline(always)]
-    pub(crate) fn latin_point<const POW2: bool>(
+    pub(crate) fn cells<const POW2: bool, const N: usize>(
+        &self,
+        cell: [u32; N],
+    ) -> ([u32; N], [u32; N]) {
+        let (mut row, mut column) = ([0; N], [0; N]);
+        for lane in 0..N {
+            (row[lane], column[lane]) = self.cell::<POW2>(cell[lane]);
+        }
+        (row, column)
+    }
+
+    /// The point of coarse cell `cell` at fraction `bits / 2^32` of the way
+    /// across it in x and y (regular, jittered).
+    #[inline(always)]
+    pub(crate) fn cell_point<const POW2: bool>(
         &self,
         cell: u32,
-        (row, column): (u32, u32),
-        (sub_column, sub_row): (u32, u32),
-        jitter: &Jitter,
+        (x_bits, y_bits): (u32, u32),
     ) -> Vec2 {
-        let (x_bits, y_bits) = jitter.bits(cell);
+        let (row, column) = self.cell::<POW2>(cell);
         Vec2::new(
-            self.n
-                .stratum_to_unit_f32_in::<POW2>(column * self.rows() + sub_column, x_bits),
-            self.n
-                .stratum_to_unit_f32_in::<POW2>(row * self.columns() + sub_row, y_bits),
+            self.columns.stratum_to_unit_f32_in::<POW2>(column, x_bits),
+            self.rows.stratum_to_unit_f32_in::<POW2>(row, y_bits),
         )
+    }
+
+    /// The points of a Latin grid sampler (multi-jittered, correlated
+    /// multi-jittered), one lane each: the point of cell `cell` at `(row,
+    /// column)` lies in the fine column `column * rows + sub_column` and
+    /// the fine row `row * columns + sub_row` that the sampler's shuffles
+    /// picked, jittered uniformly inside that fine cell.
+    #[inline(always)]
+    pub(crate) fn latin_points<const POW2: bool, const N: usize>(
+        &self,
+        cell: [u32; N],
+        (row, column): ([u32; N], [u32; N]),
+        (sub_column, sub_row): ([u32; N], [u32; N]),
+        jitter: &Jitter,
+    ) -> [Vec2; N] {
+        let mut out = [Vec2::ZERO; N];
+        for (lane, point) in out.iter_mut().enumerate() {
+            let (x_bits, y_bits) = jitter.bits(cell[lane]);
+            *point = Vec2::new(
+                self.n.stratum_to_unit_f32_in::<POW2>(
+                    column[lane] * self.rows() + sub_column[lane],
+                    x_bits,
+                ),
+                self.n.stratum_to_unit_f32_in::<POW2>(
+                    row[lane] * self.columns() + sub_row[lane],
+                    y_bits,
+                ),
+            );
+        }
+        out
     }
 }
 

@@ -94,14 +94,7 @@ impl GridPattern for JitteredPattern<'_> {
     fn points<const POW2: bool, const N: usize>(&self, index: [u32; N]) -> [Vec2; N] {
         let mut out = [Vec2::ZERO; N];
         for (point, cell) in out.iter_mut().zip(self.order.apply_lanes(index)) {
-            let (row, column) = self.grid.cell::<POW2>(cell);
-            let (x_bits, y_bits) = self.jitter.bits(cell);
-            *point = Vec2::new(
-                self.grid
-                    .columns
-                    .stratum_to_unit_f32_in::<POW2>(column, x_bits),
-                self.grid.rows.stratum_to_unit_f32_in::<POW2>(row, y_bits),
-            );
+            *point = self.grid.cell_point::<POW2>(cell, self.jitter.bits(cell));
         }
         out
     }

@@ -157,32 +157,24 @@ impl<S: LineShuffles> GridPattern for MultiJitteredPattern<'_, S> {
 
     #[inline(always)]
     fn points<const POW2: bool, const N: usize>(&self, index: [u32; N]) -> [Vec2; N] {
-        let grid = self.grid;
         let cell = self.order.apply_lanes(index);
-        let (mut row, mut column) = ([0; N], [0; N]);
+        let (row, column) = self.grid.cells::<POW2, N>(cell);
+        // Coarse column `column` holds one point per coarse row: the
+        // column's own shuffle of its rows picks which fine column each
+        // point takes. Likewise for rows. Distinct shuffles per column make
+        // it Chiu et al.'s (uncorrelated) multi-jitter.
         let mut column_shuffles = [Permutation::default(); N];
         let mut row_shuffles = [Permutation::default(); N];
         for lane in 0..N {
-            (row[lane], column[lane]) = grid.cell::<POW2>(cell[lane]);
-            // Coarse column `column` holds one point per coarse row: the
-            // column's own shuffle of its rows picks which fine column each
-            // point takes. Likewise for rows. Distinct shuffles per column
-            // make it Chiu et al.'s (uncorrelated) multi-jitter.
             column_shuffles[lane] = self.shuffles.column(column[lane]);
             row_shuffles[lane] = self.shuffles.row(row[lane]);
         }
-        let sub_column = Permutation::apply_each(&column_shuffles, row);
-        let sub_row = Permutation::apply_each(&row_shuffles, column);
-        let mut out = [Vec2::ZERO; N];
-        for (lane, point) in out.iter_mut().enumerate() {
-            *point = grid.latin_point::<POW2>(
-                cell[lane],
-                (row[lane], column[lane]),
-                (sub_column[lane], sub_row[lane]),
-                &self.jitter,
-            );
-        }
-        out
+        let sub = (
+            Permutation::apply_each(&column_shuffles, row),
+            Permutation::apply_each(&row_shuffles, column),
+        );
+        self.grid
+            .latin_points::<POW2, N>(cell, (row, column), sub, &self.jitter)
     }
 }
 

@@ -85,14 +85,8 @@ impl GridPattern for RegularPattern<'_> {
     fn points<const POW2: bool, const N: usize>(&self, index: [u32; N]) -> [Vec2; N] {
         let mut out = [Vec2::ZERO; N];
         for (point, cell) in out.iter_mut().zip(self.order.apply_lanes(index)) {
-            let (row, column) = self.grid.cell::<POW2>(cell);
             // Half-way bits put the point at the cell's centre, to within 2^-24.
-            *point = Vec2::new(
-                self.grid
-                    .columns
-                    .stratum_to_unit_f32_in::<POW2>(column, 1 << 31),
-                self.grid.rows.stratum_to_unit_f32_in::<POW2>(row, 1 << 31),
-            );
+            *point = self.grid.cell_point::<POW2>(cell, (1 << 31, 1 << 31));
         }
         out
     }
