@@ -150,18 +150,8 @@ pub fn is_stratified(points: &[Vec2], columns: u32, rows: u32) -> Result<bool, E
 /// # Ok::<(), wellspread::Error>(())
 /// ```
 pub fn is_net_base2(points: &[Vec2]) -> Result<bool, Error> {
-    validate(points)?;
-    let n = points.len();
-    if !n.is_power_of_two() {
-        return Err(Error::NotPowerOfTwo { n });
-    }
-    let m = n.trailing_zeros();
-    // Fixed-point coordinates with m bits: the cell in a 2^k-wide column
-    // is the top k bits.
-    let cells: Vec<(u64, u64)> = points
-        .iter()
-        .map(|p| (cell_of(p.x, n as u64), cell_of(p.y, n as u64)))
-        .collect();
+    let (m, cells) = net_cells(points)?;
+    let n = cells.len();
     let mut stamp = vec![u32::MAX; n];
     for k in 0..=m {
         let (drop_x, drop_y) = (m - k, k);
@@ -234,16 +224,8 @@ pub fn is_net_base2(points: &[Vec2]) -> Result<bool, Error> {
 /// Niederreiter 1992, "Random Number Generation and Quasi-Monte Carlo
 /// Methods", SIAM, chapter 4 ((t, m, s)-nets).
 pub fn net_t_value(points: &[Vec2]) -> Result<u32, Error> {
-    validate(points)?;
-    let n = points.len();
-    if !n.is_power_of_two() {
-        return Err(Error::NotPowerOfTwo { n });
-    }
-    let m = n.trailing_zeros();
-    let cells: Vec<(u64, u64)> = points
-        .iter()
-        .map(|p| (cell_of(p.x, n as u64), cell_of(p.y, n as u64)))
-        .collect();
+    let (m, cells) = net_cells(points)?;
+    let n = cells.len();
     let mut counts = vec![0u32; n];
     // Galloping search from t = 0 (the answer for good sets, which then costs
     // one check), then a binary search. A failing check usually stops early.
@@ -294,6 +276,22 @@ fn is_net_with_t(cells: &[(u64, u64)], m: u32, t: u32, counts: &mut [u32]) -> bo
         }
     }
     true
+}
+
+/// What the base-2 net checks share: `m` for `n = 2^m` points, and each
+/// point's fine cell `(column, row)` on the `n x n` grid, in fixed point, so
+/// that the cell in a `2^k`-wide column is the top `k` of its `m` bits.
+fn net_cells(points: &[Vec2]) -> Result<(u32, Vec<(u64, u64)>), Error> {
+    validate(points)?;
+    let n = points.len();
+    if !n.is_power_of_two() {
+        return Err(Error::NotPowerOfTwo { n });
+    }
+    let cells = points
+        .iter()
+        .map(|p| (cell_of(p.x, n as u64), cell_of(p.y, n as u64)))
+        .collect();
+    Ok((n.trailing_zeros(), cells))
 }
 
 #[cfg(test)]
