@@ -273,6 +273,17 @@ fn svg_start(title: &str) -> String {
     svg
 }
 
+/// A vertical grid line at `x` with its label under the plot.
+fn x_grid_line(svg: &mut String, x: f64, label: &str) {
+    let plot_h = HEIGHT - TOP - BOTTOM;
+    let _ = writeln!(
+        svg,
+        r##"<line x1="{x:.1}" y1="{TOP}" x2="{x:.1}" y2="{:.1}" stroke="#ddd"/><text x="{x:.1}" y="{:.1}" text-anchor="middle">{label}</text>"##,
+        TOP + plot_h,
+        TOP + plot_h + 18.0
+    );
+}
+
 /// The decade grid of a log y axis from `10^lo` to `10^hi` (`sy` maps a
 /// value to its y), the plot frame, and both axis labels.
 fn log_y_axis_and_frame(
@@ -344,13 +355,7 @@ pub fn trade_plot_svg(title: &str, series: &[Series<'_>], target: f64) -> String
     let mut svg = svg_start(title);
     // Decade grid lines and labels.
     for decade in x_lo as i32..=x_hi as i32 {
-        let x = sx(10f64.powi(decade));
-        let _ = writeln!(
-            svg,
-            r##"<line x1="{x:.1}" y1="{TOP}" x2="{x:.1}" y2="{:.1}" stroke="#ddd"/><text x="{x:.1}" y="{:.1}" text-anchor="middle">1e{decade}</text>"##,
-            TOP + plot_h,
-            TOP + plot_h + 18.0
-        );
+        x_grid_line(&mut svg, sx(10f64.powi(decade)), &format!("1e{decade}"));
     }
     log_y_axis_and_frame(
         &mut svg,
@@ -439,13 +444,7 @@ pub fn spectrum_svg(title: &str, series: &[(&str, Vec<f64>)]) -> String {
     let mut svg = svg_start(title);
     for tick in 0..=5 {
         let f = f64::from(tick) * 0.1;
-        let x = sx(f);
-        let _ = writeln!(
-            svg,
-            r##"<line x1="{x:.1}" y1="{TOP}" x2="{x:.1}" y2="{:.1}" stroke="#ddd"/><text x="{x:.1}" y="{:.1}" text-anchor="middle">{f:.1}</text>"##,
-            TOP + plot_h,
-            TOP + plot_h + 18.0
-        );
+        x_grid_line(&mut svg, sx(f), &format!("{f:.1}"));
     }
     log_y_axis_and_frame(
         &mut svg,
