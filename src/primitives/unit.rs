@@ -76,8 +76,16 @@ pub const fn stratum_to_unit_f32(stratum: u32, strata: u32, bits: u32) -> f32 {
     let strata = strata as u64;
     let start = ((stratum as u64) << UNIT_BITS).div_ceil(strata);
     let end = ((stratum as u64 + 1) << UNIT_BITS).div_ceil(strata);
-    // end > start whenever strata <= 2^24; `saturating_sub` and the `min`
-    // keep a release build with bad arguments inside [0, 1).
+    within_stratum(start, end, bits)
+}
+
+/// The grid point at fraction `bits / 2^32` of the way from `start` to
+/// `end` (the first grid points of a stratum and of the next one), as a
+/// float. `end > start` whenever the strata number at most 2^24;
+/// `saturating_sub` and the clamp keep a release build handed bad
+/// arguments inside `[0, 1)`.
+#[inline(always)]
+const fn within_stratum(start: u64, end: u64, bits: u32) -> f32 {
     let t = start + ((end.saturating_sub(start) * bits as u64) >> 32);
     let t = if t < MAX_STRATA as u64 {
         t
@@ -123,16 +131,7 @@ impl InvariantDivisor {
         }
         let start = self.div_ceil((stratum as u64) << UNIT_BITS);
         let end = self.div_ceil((stratum as u64 + 1) << UNIT_BITS);
-        // Same arithmetic as `stratum_to_unit_f32` from here on; with valid
-        // arguments `end > start` and `t < 2^24`, and the clamps stay for
-        // release builds handed bad ones.
-        let t = start + ((end.saturating_sub(start) * bits as u64) >> 32);
-        let t = if t < MAX_STRATA as u64 {
-            t
-        } else {
-            MAX_STRATA as u64 - 1
-        };
-        t as f32 * (1.0 / MAX_STRATA as f32)
+        within_stratum(start, end, bits)
     }
 }
 
@@ -155,6 +154,29 @@ mod tests {
     fn unit_f32_edges() {
         assert_eq!(u32_to_unit_f32(u32::MAX), ONE_MINUS_EPSILON);
         assert_eq!(u32_to_unit_f32(1 << 8), 1.0 / 16_777_216.0);
+    }
+
+    #[test]
+    fn prepared_strata_match_the_free_function() {
+        // The divisions by a prepared `InvariantDivisor` (and the
+        // power-of-two shifts) against the plain u64 divisions.
+        let mut x = 0x9e37_79b9_u32;
+        for strata in (1..=300).chain([4095, 4096, 4097, 65_536, 65_537, 3_000_017, MAX_STRATA]) {
+            let prepared = InvariantDivisor::new(strata);
+            for _ in 0..64 {
+                x = x.wrapping_mul(0x2c1b_3c6d).wrapping_add(0x2976_2fb1);
+                let stratum = x % strata;
+                for bits in [0, 1, 1 << 31, u32::MAX, x.rotate_left(7)] {
+                    let want = stratum_to_unit_f32(stratum, strata, bits).to_bits();
+                    let got = prepared.stratum_to_unit_f32(stratum, bits).to_bits();
+                    assert_eq!(got, want, "{stratum} of {strata}, bits {bits:#x}");
+                    if strata.is_power_of_two() {
+                        let shifted = prepared.stratum_to_unit_f32_in::<true>(stratum, bits);
+                        assert_eq!(shifted.to_bits(), want, "{stratum} of {strata} (POW2)");
+                    }
+                }
+            }
+        }
     }
 
     #[test]
