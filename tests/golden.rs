@@ -28,7 +28,7 @@
 //! change.
 
 use wellspread::glam::Vec2;
-use wellspread::hash::{
+use wellspread::primitives::{
     hash_combine, hash_u32, pattern_seed, permute, rand_u32, stratum_to_unit_f32, u32_to_unit_f32,
 };
 use wellspread::{Sampler2D, SamplerKind};

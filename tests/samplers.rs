@@ -107,7 +107,6 @@ fn guarantees_line(kind: SamplerKind) -> Option<Guarantees> {
         SamplerKind::Halton => Guarantees { any_index: true, halton_runs: true, ..CONTRACT },
         SamplerKind::Sobol => SEQUENCE,
         SamplerKind::Pmj02 => Guarantees { square_prefixes: true, ..SEQUENCE },
-        _ => return None,
     };
     Some(g)
 }
@@ -1162,8 +1161,8 @@ fn first_points_of_dimension_pairs_are_unrelated() {
         let sampler = kind.build(1).unwrap();
         let mut agree = 0;
         for pixel in 0..4096 {
-            let a = sampler.sample(0, wellspread::hash::pattern_seed(pixel, 0, 0, 0));
-            let b = sampler.sample(0, wellspread::hash::pattern_seed(pixel, 0, 0, 1));
+            let a = sampler.sample(0, wellspread::primitives::pattern_seed(pixel, 0, 0, 0));
+            let b = sampler.sample(0, wellspread::primitives::pattern_seed(pixel, 0, 0, 1));
             agree += u32::from((a.x < 0.5) == (b.x < 0.5));
         }
         assert!((2048 - 192..2048 + 192).contains(&agree), "{kind}: {agree}");

@@ -36,7 +36,7 @@ pub const fn hash_combine(seed: u32, value: u32) -> u32 {
 /// dimensions: never by reusing one pattern.
 ///
 /// ```
-/// use wellspread::hash::pattern_seed;
+/// use wellspread::primitives::pattern_seed;
 /// let pixel = pattern_seed(10, 20, 0, 0);
 /// let lens = pattern_seed(10, 20, 0, 1);
 /// assert_ne!(pixel, lens);

@@ -3,8 +3,8 @@ use glam::Vec2;
 use crate::primitives::{
     InvariantDivisor, MAX_STRATA, hash_u32, owen_scramble_reversed, rand_u32, salt, u32_to_unit_f32,
 };
-use crate::sampler::{FillOn, Sampler2D, check_fill_len, debug_check_index};
 use crate::simd::{self, Isa, PointKernel, Pointwise};
+use crate::traits::{FillOn, Sampler2D, check_fill_len, debug_check_index};
 use crate::{Error, SamplerKind};
 
 /// The Hammersley set `(i / n, phi_2(i))`, randomised: scrambled.
@@ -34,9 +34,7 @@ use crate::{Error, SamplerKind};
 ///
 /// One pattern hash (once per [`fill`](Sampler2D::fill)), one [`rand_u32`](crate::primitives::rand_u32)
 /// and one Owen-scramble hash, one bit reversal and one fixed-point stratum
-/// conversion per sample. `fill` runs the same formula on 8 or 16 lanes at once (AVX2 or AVX-512,
-/// detected at run time), bit for bit equal to `sample`; measured ratios to a
-/// `rand_pcg::Pcg32` fill are in `docs/performance.md`.
+/// conversion per sample.
 ///
 /// # Limits
 ///

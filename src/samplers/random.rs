@@ -2,8 +2,8 @@ use glam::Vec2;
 
 use crate::Error;
 use crate::primitives::{hash_combine, hash_u32, salt, u32_to_unit_f32};
-use crate::sampler::{FillOn, Sampler2D, check_fill_len, debug_check_index};
 use crate::simd::{self, Isa, PointKernel, Pointwise};
+use crate::traits::{FillOn, Sampler2D, check_fill_len, debug_check_index};
 
 /// Independent uniform points: the baseline every other sampler must beat.
 ///
@@ -15,9 +15,7 @@ use crate::simd::{self, Isa, PointKernel, Pointwise};
 /// # Cost
 ///
 /// Three 32-bit integer hashes per sample after one hash of the pattern
-/// (once per `fill`); no division, no loop. `fill` runs the same formula on 8 or 16 lanes at once (AVX2 or AVX-512,
-/// detected at run time), bit for bit equal to `sample`; measured ratios to a
-/// `rand_pcg::Pcg32` fill are in `docs/performance.md`.
+/// (once per `fill`); no division, no loop.
 ///
 /// # Limits
 ///
