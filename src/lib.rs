@@ -10,7 +10,7 @@
 //! ([`Sequence2D`]) accept any index below 2^32 and keep their guarantees
 //! at every power-of-two prefix.
 //!
-//! Every sampler implements [`Sampler2D`]: sample `index` of pattern
+//! Every sampler kind implements [`Sampler2D`]: sample `index` of pattern
 //! `pattern` in O(1), with no tables and no shared state, so any thread
 //! rendering any tile gets the same sample. Every coordinate is in `[0, 1)`
 //! after f32 rounding.

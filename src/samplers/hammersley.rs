@@ -102,15 +102,17 @@ impl Hammersley {
 }
 
 impl Hammersley {
-    /// Sample `index < n` given the pattern's hash `seed`: the one formula
-    /// `sample` and `fill` share.
+    /// Sample `index < n` given `pattern_hash`, the hash of the pattern:
+    /// the one formula `sample` and `fill` share.
     #[inline(always)]
-    fn point(&self, seed: u32, index: u32) -> Vec2 {
+    fn point(&self, pattern_hash: u32, index: u32) -> Vec2 {
         Vec2::new(
             self.n
-                .stratum_to_unit_f32(index, rand_u32(index, seed ^ salt::JITTER_X)),
+                .stratum_to_unit_f32(index, rand_u32(index, pattern_hash ^ salt::JITTER_X)),
             // In reversed bit order the radical inverse of `index` is `index`.
-            u32_to_unit_f32(owen_scramble_reversed(index, seed ^ salt::JITTER_Y).reverse_bits()),
+            u32_to_unit_f32(
+                owen_scramble_reversed(index, pattern_hash ^ salt::JITTER_Y).reverse_bits(),
+            ),
         )
     }
 }
@@ -118,13 +120,13 @@ impl Hammersley {
 /// One pattern of [`Hammersley`]: its hash.
 struct HammersleyKernel<'a> {
     sampler: &'a Hammersley,
-    seed: u32,
+    pattern_hash: u32,
 }
 
 impl PointKernel for HammersleyKernel<'_> {
     #[inline(always)]
     fn point(&self, index: u32) -> Vec2 {
-        self.sampler.point(self.seed, index)
+        self.sampler.point(self.pattern_hash, index)
     }
 }
 
@@ -143,12 +145,14 @@ impl Sampler2D for Hammersley {
         } else {
             self.len() - 1
         };
-        let seed = hash_u32(pattern);
-        let p = self.point(seed, column);
+        let pattern_hash = hash_u32(pattern);
+        let p = self.point(pattern_hash, column);
         // The y coordinate keeps the unclamped index, as a sequence would.
         Vec2::new(
             p.x,
-            u32_to_unit_f32(owen_scramble_reversed(index, seed ^ salt::JITTER_Y).reverse_bits()),
+            u32_to_unit_f32(
+                owen_scramble_reversed(index, pattern_hash ^ salt::JITTER_Y).reverse_bits(),
+            ),
         )
     }
 
@@ -160,10 +164,10 @@ impl Sampler2D for Hammersley {
 impl FillOn for Hammersley {
     fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
         check_fill_len(out.len(), self.len());
-        let seed = hash_u32(pattern);
+        let pattern_hash = hash_u32(pattern);
         let kernel = HammersleyKernel {
             sampler: self,
-            seed,
+            pattern_hash,
         };
         simd::fill_on(isa, &Pointwise(kernel), 0, out);
     }

@@ -56,20 +56,20 @@ impl Random {
 }
 
 impl Random {
-    /// Sample `index` given the pattern's hash `seed`: the one formula
-    /// `sample` and `fill` share.
+    /// Sample `index` given `pattern_hash`, the hash of the pattern: the one
+    /// formula `sample` and `fill` share.
     #[inline(always)]
-    fn point(seed: u32, index: u32) -> Vec2 {
-        // Hashing the index before mixing in the seed matters: with
-        // `index ^ seed`, two seeds that differ only in bits below n would
-        // feed the same inputs in another order and so give the same set.
-        // The index must not be hashed like the pattern either: with
-        // `hash(index) ^ hash(pattern)`, sample i of pattern p is sample p
-        // of pattern i, so patterns 0 and 1 of a 2-point set were the same
-        // set. `hash_combine` adds a constant to the index's hash first.
+    fn point(pattern_hash: u32, index: u32) -> Vec2 {
+        // Hashing the index before mixing in the pattern_hash matters: with
+        // `index ^ pattern_hash`, two patterns whose hashes differ only in
+        // bits below n would feed the same inputs in another order and so
+        // give the same set. The index must not be hashed like the pattern
+        // either: with `hash(index) ^ hash(pattern)`, sample i of pattern p
+        // is sample p of pattern i, so patterns 0 and 1 of a 2-point set
+        // would be the same set. `hash_combine` adds a constant to the index's hash first.
         // Both are bijections of the index, so one pattern's x bits are all
         // distinct; y hashes x's full 32 bits again with another salt.
-        let bits_x = hash_combine(seed ^ salt::JITTER_X, index);
+        let bits_x = hash_combine(pattern_hash ^ salt::JITTER_X, index);
         let bits_y = hash_u32(bits_x ^ salt::JITTER_Y);
         Vec2::new(u32_to_unit_f32(bits_x), u32_to_unit_f32(bits_y))
     }
@@ -77,13 +77,13 @@ impl Random {
 
 /// One pattern of [`Random`]: its hash.
 struct RandomKernel {
-    seed: u32,
+    pattern_hash: u32,
 }
 
 impl PointKernel for RandomKernel {
     #[inline(always)]
     fn point(&self, index: u32) -> Vec2 {
-        Random::point(self.seed, index)
+        Random::point(self.pattern_hash, index)
     }
 }
 
@@ -108,7 +108,7 @@ impl FillOn for Random {
     fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
         check_fill_len(out.len(), self.n);
         // The pattern hash once per set: three hashes per sample, not four.
-        let seed = hash_u32(pattern);
-        simd::fill_on(isa, &Pointwise(RandomKernel { seed }), 0, out);
+        let pattern_hash = hash_u32(pattern);
+        simd::fill_on(isa, &Pointwise(RandomKernel { pattern_hash }), 0, out);
     }
 }

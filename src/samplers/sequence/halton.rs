@@ -166,10 +166,10 @@ struct HaltonSeeds {
 impl HaltonSeeds {
     #[inline]
     const fn new(pattern: u32) -> Self {
-        let seed = hash_u32(pattern);
+        let pattern_hash = hash_u32(pattern);
         Self {
-            x: hash_u32(seed ^ salt::JITTER_X),
-            y: hash_u32(seed ^ salt::JITTER_Y),
+            x: hash_u32(pattern_hash ^ salt::JITTER_X),
+            y: hash_u32(pattern_hash ^ salt::JITTER_Y),
         }
     }
 }

@@ -52,11 +52,7 @@ use crate::traits::{FillOn, Sampler2D, Sequence2D};
 /// Four [`hash_u32`](crate::primitives::hash_u32) of the pattern (once per
 /// [`fill`](Sampler2D::fill)), then per sample three Owen-scramble hashes of
 /// four multiply-xor steps, four bit reversals and five xor-shift steps: no
-/// loop, no table, no division, about 160 x86-64 instructions for `sample`.
-/// `sobol_burley::sample`, called once per dimension, shuffles the index and
-/// hashes the seed per dimension and loops over the set bits of a 16-bit index
-/// through a direction-number table (so it accepts indices below 2^16 only).
-///
+/// loop, no table, no division.
 ///
 /// # Limits
 ///
@@ -216,8 +212,8 @@ impl DigitalSequence for Sobol {
 
 #[cfg(test)]
 mod tests {
-    use crate::samplers::sequence::digital::tests::is_02_sequence;
     use super::*;
+    use crate::samplers::sequence::digital::tests::is_02_sequence;
 
     #[test]
     fn sobol_is_a_02_sequence_up_to_2_to_the_32() {
