@@ -210,7 +210,7 @@ fn longer_lengths_are_uniform_and_distinct() {
 }
 
 /// The fine-grid cell of every point of one set, in index order (from
-/// `fill`, which `tests/samplers.rs` checks equals `sample`).
+/// `fill`, which `tests/samplers/` checks equals `sample`).
 fn cells<S: Sampler2D>(sampler: &S, n: u32, pattern: u32) -> Vec<(u32, u32)> {
     let mut points = vec![wellspread::glam::Vec2::ZERO; sampler.len() as usize];
     sampler.fill(pattern, &mut points);
