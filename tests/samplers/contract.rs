@@ -173,7 +173,7 @@ fn regular_and_jittered_take_the_largest_u32_grid() {
 
 /// Small consecutive patterns (frame numbers, dimension indices) share no
 /// point: a pattern mixed into the index symmetrically made sample i of
-/// pattern p equal sample p of pattern i (`Random` did, before the fix).
+/// pattern p equal sample p of pattern i.
 /// Accidental sharing needs two 24-bit coordinates to agree: below 1e-6
 /// over this whole test.
 #[test]

@@ -34,7 +34,7 @@ fn check_prefixes(kind: SamplerKind, pattern: u32) -> Result<(), TestCaseError> 
 }
 
 /// Proptest cases for the prefix nets: each case builds 2^16 points per
-/// sequence and checks 17 prefixes on every box shape (10 to 40 ms).
+/// sequence and checks 17 prefixes on every box shape.
 const NET_CASES: u32 = 48;
 
 proptest! {
