@@ -32,6 +32,10 @@ macro_rules! sampler_kinds {
         /// assert_eq!(kind.name(), "multi-jittered");
         /// # Ok::<(), Box<dyn std::error::Error>>(())
         /// ```
+        ///
+        /// Not `#[non_exhaustive]`, on purpose: a `match` over the kinds, in
+        /// this crate or its tests and tools, fails to compile until a new
+        /// kind has its line (a new kind is a new minor version).
         #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
         pub enum SamplerKind {
             $(
