@@ -226,3 +226,45 @@ mod serde_impls {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_sequences_are_sobol_pmj02_and_halton() {
+        let sequences: std::vec::Vec<SamplerKind> = SamplerKind::ALL
+            .iter()
+            .copied()
+            .filter(|kind| kind.build(16).unwrap().as_sequence().is_some())
+            .collect();
+        assert_eq!(
+            sequences,
+            [SamplerKind::Halton, SamplerKind::Sobol, SamplerKind::Pmj02]
+        );
+    }
+
+    #[test]
+    fn every_sequence_fills_any_run_as_it_samples() {
+        for &kind in SamplerKind::ALL {
+            let sampler = kind.build(16).unwrap();
+            let Some(sequence) = sampler.as_sequence() else {
+                continue;
+            };
+            // Runs past the set size, across 2^24, and up to the last index.
+            for start in [0, 5, 16, (1 << 24) - 3, u32::MAX - 20] {
+                let mut out = [Vec2::NAN; 21];
+                sequence.fill_from(start, 7, &mut out);
+                for (offset, point) in (0..).zip(&out) {
+                    let expected = sequence.sample(start + offset, 7);
+                    assert_eq!(
+                        (point.x.to_bits(), point.y.to_bits()),
+                        (expected.x.to_bits(), expected.y.to_bits()),
+                        "{kind} index {}",
+                        start + offset
+                    );
+                }
+            }
+        }
+    }
+}
