@@ -127,6 +127,7 @@ mod error;
 #[cfg(feature = "alloc")]
 pub mod metrics;
 mod pixel;
+mod pixel_blue_noise;
 pub mod primitives;
 mod samplers;
 mod simd;
@@ -134,6 +135,7 @@ mod traits;
 
 pub use error::{Error, InputText};
 pub use pixel::{Padded, PixelCursor, PixelSampler};
+pub use pixel_blue_noise::BlueNoise;
 pub use primitives::pattern_seed;
 pub use samplers::{
     AnySampler, CorrelatedMultiJittered, Halton, Hammersley, Jittered, LatinHypercube,
