@@ -6,10 +6,12 @@
 //! the lens, the light or the BSDF keeps its stratification. Every map here
 //! is measure-preserving (a uniform point on the square gives a point with
 //! the stated pdf, checked by chi-square tests on equal-measure bins) and
-//! continuous with bounded distortion over the square, so strata of the
-//! square become compact strata of equal measure on the target: warped
+//! continuous, so strata of the square become connected cells of equal
+//! measure on the target, compact away from the sphere maps' poles: warped
 //! Owen-scrambled [`Sobol`](crate::Sobol) points keep converging faster than
-//! random ones (`tests/warp.rs` measures the slopes).
+//! random ones. On a smooth integrand, the RMSE of 2^4 to 2^12 warped Sobol
+//! points falls like `n^-1.25` to `n^-1.35` for every map here, against
+//! `n^-0.5` for random points (`tests/warp.rs` measures the slopes).
 //!
 //! Every function is pure and `no_std`; the trigonometry is
 //! [`libm`](https://docs.rs/libm)'s, whatever the features, so the values
