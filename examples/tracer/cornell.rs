@@ -106,8 +106,10 @@ pub trait SampleSource: Sync {
 /// references). Every other draw `k` of the domain with key `c` is the
 /// pair `hash_combine(c, k)`, moved above 2, and a branch's key is
 /// `hash_combine(c ^ BRANCH, key)`: branches depend only on their parent's
-/// key. `next_1d` spends a whole pair (its `x`), so 1D draws keep the
-/// sampler's 2D stratification only through that projection.
+/// key. 1D draws share pairs: the first `next_1d` of a domain takes a pair
+/// and returns its `x`, the second returns its `y`, and so on, so a
+/// bounce's light choice and roulette are one pair, each stratified as the
+/// sampler's 1D projections are (3 pairs per bounce, not 4).
 pub struct Pairs<'a, P: ?Sized>(pub &'a P);
 
 /// The state of one domain of [`Pairs`].
@@ -117,8 +119,11 @@ pub struct PairSamples<'a, P: ?Sized> {
     index: u32,
     /// The domain's key; the root's is [`ROOT_KEY`].
     key: u32,
-    /// Draws taken from this domain so far.
+    /// Pairs taken from this domain so far.
     draws: u32,
+    /// The `y` of the last pair a `next_1d` took, if no `next_1d` has
+    /// used it yet.
+    pending: Option<f32>,
 }
 
 // By hand: derives would ask `P: Copy`, but only the reference is copied.
@@ -158,6 +163,7 @@ impl<'a, P: PixelSampler + ?Sized> PairSamples<'a, P> {
             index,
             key: ROOT_KEY,
             draws: 0,
+            pending: None,
         }
     }
 
@@ -177,7 +183,14 @@ impl<'a, P: PixelSampler + ?Sized> PairSamples<'a, P> {
 
 impl<P: PixelSampler + ?Sized> PathSamples for PairSamples<'_, P> {
     fn next_1d(&mut self) -> f32 {
-        self.next_2d().x
+        match self.pending.take() {
+            Some(y) => y,
+            None => {
+                let pair = self.next_2d();
+                self.pending = Some(pair.y);
+                pair.x
+            }
+        }
     }
 
     fn next_2d(&mut self) -> Vec2 {
@@ -199,6 +212,7 @@ impl<P: PixelSampler + ?Sized> PathSamples for PairSamples<'_, P> {
         Self {
             key: hash_combine(self.key ^ BRANCH, key),
             draws: 0,
+            pending: None,
             ..*self
         }
     }
@@ -856,9 +870,15 @@ mod tests {
             Vec2::new(film_lens.z, film_lens.w),
             sampler.sample_pixel([5, 6], 3, 2)
         );
-        // Successive draws of one domain differ.
+        // Successive draws of one domain differ; two 1D draws share a pair.
         let mut d = root.branch(7);
         assert_ne!(d.next_2d(), d.next_2d());
+        let mut d = root.branch(7);
+        let (x, pair, y) = (d.next_1d(), d.next_2d(), d.next_1d());
+        let mut e = root.branch(7);
+        let shared = e.next_2d();
+        assert_eq!((x, y), (shared.x, shared.y));
+        assert_eq!(pair, e.next_2d());
     }
 
     #[test]
