@@ -65,9 +65,20 @@ pub const ROULETTE_FROM: u32 = 3;
 /// derives a child that depends only on this domain and `key`, never on
 /// what was drawn before.
 ///
-/// The library's `Domain` fits as is (it is `Copy` and owns its sampler):
+/// The library's `Domain` fits as is (it is `Copy` and owns its sampler);
+/// with it, `render_cornell(w, h, spp, &Domains(sampler))` renders film
+/// and lens as one 4D point:
 ///
 /// ```ignore
+/// pub struct Domains<P>(pub P);
+///
+/// impl<P: PixelSampler + Copy> SampleSource for Domains<P> {
+///     type Samples = wellspread::Domain<P>;
+///     fn start(&self, pixel: [u32; 2], index: u32) -> wellspread::Domain<P> {
+///         self.0.start(pixel, index)
+///     }
+/// }
+///
 /// impl<P: PixelSampler + Copy> PathSamples for wellspread::Domain<P> {
 ///     fn next_1d(&mut self) -> f32 { wellspread::Domain::next_1d(self) }
 ///     fn next_2d(&mut self) -> Vec2 { wellspread::Domain::next_2d(self) }
