@@ -208,7 +208,9 @@ pub fn concentric_disk_inverse(p: Vec2) -> Vec2 {
 ///   projected solid angle: what the concentric map keeps, this keeps.
 /// - `z >= 0` always; `|v| = 1` within 2^-22 (tested at the square's edges
 ///   and over random inputs). The rim `z = 0` is reached at the square's
-///   boundary (`u.x = 0`, or `u.y = 0`).
+///   boundary (`u.x = 0`, or `u.y = 0`), where the pdf is 0: an estimator
+///   should use the cancelled weight (`f cos / pdf = pi f`), not divide by
+///   the pdf.
 ///
 /// # Cost
 ///
