@@ -3,7 +3,7 @@
 //! index of the sequence.
 
 use wellspread::glam::Vec2;
-use wellspread::{Halton, Pmj02, Sampler2D, Sobol};
+use wellspread::{Halton, Pmj02, Sampler2D, Sequence2D, Sobol};
 
 /// `fill_from(start, ..)` equals `sample(start + i, ..)` for lengths around
 /// the batch width and starts up to the last index.
