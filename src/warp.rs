@@ -541,7 +541,10 @@ pub fn uniform_triangle_inverse(b: Vec3) -> Vec2 {
 ///   2^24.
 /// - The remapped `u` is in `[0, 1)`: it is rounded to f32 and clamped to
 ///   [`ONE_MINUS_EPSILON`]; it is 0 at the left edge of each choice's
-///   interval and monotone inside it.
+///   interval and monotone inside it. When the `u` of a pixel's `2^m`
+///   samples are one per interval of `2^-m` (a sequence's 1D draws) and
+///   `n = 2^k <= 2^m`, each choice's `2^(m-k)` remapped values are one per
+///   interval of `2^-(m-k)`: the reuse keeps the strata.
 ///
 /// # Limits
 ///
