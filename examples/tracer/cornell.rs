@@ -42,8 +42,7 @@ use wellspread::glam::{Vec2, Vec3, Vec4};
 use wellspread::primitives::hash_combine;
 use wellspread::warp;
 
-/// Linear RGB.
-pub type Rgb = [f32; 3];
+use crate::scenes::Rgb;
 
 /// The key of the per-bounce branch: bounce `b` draws from
 /// `root.branch(BOUNCE).branch(b)`.
