@@ -157,8 +157,11 @@ const PIXEL_TABLE: [[[u32; 2]; 256]; 4] = {
 ///
 /// Per sample: the pair's seeds (six hashes), the index shuffle, the code
 /// shuffle and two coordinate scrambles (four Owen scrambles, one more
-/// than a [`Sobol`](crate::Sobol) point), the Morton code and four lookups in a 8 KiB table computed at
-/// compile time from the 256-byte column list.
+/// than a [`Sobol`](crate::Sobol) point), the Morton code and four
+/// lookups in an 8 KiB table computed at compile time from the 256-byte
+/// column list. Callgrind counts about 395 x86-64 instructions per
+/// `sample_pixel` through `&dyn PixelSampler` at scattered pixels (release
+/// build): 1.5 times `Padded<Sobol>`'s 264 and 0.6 times `ZSobol`'s 662.
 ///
 /// # Limits
 ///
