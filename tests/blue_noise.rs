@@ -367,3 +367,36 @@ fn frames_are_decorrelated_and_their_average_converges() {
         }
     }
 }
+
+#[cfg(debug_assertions)]
+#[test]
+#[should_panic(expected = "index 4 out of range 0..4")]
+fn an_index_beyond_the_count_panics_in_debug() {
+    BlueNoise::new(4, [8, 8], 0)
+        .unwrap()
+        .sample_pixel([1, 1], 4, 0);
+}
+
+#[cfg(debug_assertions)]
+#[test]
+#[should_panic(expected = "pixel (8, 0) outside the 8 x 8 film")]
+fn a_pixel_outside_the_film_panics_in_debug() {
+    BlueNoise::new(4, [8, 8], 0)
+        .unwrap()
+        .sample_pixel([8, 0], 0, 0);
+}
+
+#[cfg(not(debug_assertions))]
+#[test]
+fn out_of_range_arguments_in_release_continue_the_sequence() {
+    // Release builds do not check: an index past the count is the next
+    // sample of the progressive sampler, a pixel off the film its own.
+    let counted = BlueNoise::new(4, [8, 8], 0).unwrap();
+    let progressive = BlueNoise::unbounded([1 << 16, 1 << 16], 0).unwrap();
+    for (pixel, index) in [([1, 1], 4), ([9, 300], 0), ([7, 7], u32::MAX)] {
+        assert_eq!(
+            counted.sample_pixel(pixel, index, 1),
+            progressive.sample_pixel(pixel, index, 1)
+        );
+    }
+}
