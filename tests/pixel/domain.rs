@@ -1,0 +1,1 @@
+//! `Domain`: draws, branches, splits and edges, for every pixel sampler.
