@@ -288,7 +288,8 @@ impl<'a, P: PixelSampler + ?Sized> PixelCursor<'a, P> {
 }
 
 /// A pixel sampler behind a reference is one too, so a renderer that holds
-/// `&dyn PixelSampler` gets a `Domain<&dyn PixelSampler>` (`Copy`, `Send`
+/// `&dyn PixelSampler` gets a `Domain<&dyn PixelSampler>` from
+/// `Domain::start(sampler, pixel, index)` (`Copy`, `Send`
 /// and `Sync`, borrowing the sampler). [`AnyPixelSampler`] is the owned,
 /// `'static` dynamic form.
 impl<T: PixelSampler + ?Sized> PixelSampler for &T {
