@@ -38,7 +38,7 @@ fn distinct_strata(values: &[f32]) -> bool {
     for &v in values {
         assert!((0.0..1.0).contains(&v), "{v} outside [0, 1)");
         // v is a multiple of 2^-24, so this is exact.
-        let stratum = ((f64::from(v) * (1u64 << 24) as f64) as u64 * n >> 24) as usize;
+        let stratum = (((f64::from(v) * (1u64 << 24) as f64) as u64 * n) >> 24) as usize;
         if seen[stratum] {
             return false;
         }
