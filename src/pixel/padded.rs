@@ -8,7 +8,8 @@ use crate::primitives::{
     hash_combine, hash_u32, owen_scramble, owen_scramble_reversed, pattern_seed, permute, rand_u32,
     stratum_to_unit_f32, u32_to_unit_f32,
 };
-use crate::samplers::digital::{DigitalSequence, OwenSeeds, bits_to_point};
+use crate::samplers::digital::OwenSeeds;
+use crate::samplers::pmj02::{stirling_x, stirling_y};
 use crate::samplers::sequence::sobol_4d::dimensions_2_3_reversed;
 use crate::samplers::sobol::pascal_reversed;
 use crate::{
@@ -64,6 +65,9 @@ use crate::{
 pub struct Padded<S> {
     sampler: S,
     frame: u32,
+    /// The frame's part of every [`root`](PixelSampler::root) key, hashed
+    /// once here.
+    frame_key: u32,
 }
 
 impl<S: Sampler2D> Padded<S> {
@@ -71,7 +75,11 @@ impl<S: Sampler2D> Padded<S> {
     /// number, say) picks one of 2^32 unrelated sets of patterns.
     #[inline]
     pub const fn new(sampler: S, frame: u32) -> Self {
-        Self { sampler, frame }
+        Self {
+            sampler,
+            frame,
+            frame_key: hash_u32(frame ^ 0x2545_f491),
+        }
     }
 
     /// The wrapped sampler.
@@ -109,8 +117,7 @@ impl<S: DomainSampler + Send + Sync> PixelSampler for Padded<S> {
     /// bits.
     #[inline]
     fn root(&self, [x, y]: [u32; 2]) -> Root {
-        let frame = u64::from(hash_u32(self.frame ^ 0x2545_f491)) << 32;
-        let packed = (u64::from(y) << 32 | u64::from(x)) ^ frame;
+        let packed = (u64::from(y) << 32 | u64::from(x)) ^ u64::from(self.frame_key) << 32;
         Root {
             key: mix64(packed),
             pixel: 0,
@@ -255,13 +262,46 @@ pub(super) const fn seeds_2d(stream: u32) -> OwenSeeds {
     }
 }
 
+/// `(reverse_bits(a), reverse_bits(b))` in one 64-bit reversal: x86 has
+/// no bit-reverse instruction, and a 64-bit reversal costs what a 32-bit
+/// one does.
+#[inline(always)]
+const fn reverse_pair(a: u32, b: u32) -> (u32, u32) {
+    let r = ((b as u64) << 32 | a as u64).reverse_bits();
+    ((r >> 32) as u32, r as u32)
+}
+
+/// The point with reversed-digit coordinates `(x, y)`, Owen-scrambled by
+/// `seeds`, truncated to 24 bits.
+#[inline(always)]
+const fn scrambled_point(x: u32, y: u32, seeds: OwenSeeds) -> Vec2 {
+    let (x, y) = reverse_pair(
+        owen_scramble_reversed(x, seeds.x),
+        owen_scramble_reversed(y, seeds.y),
+    );
+    Vec2::new(u32_to_unit_f32(x), u32_to_unit_f32(y))
+}
+
+/// Point `s` (an already shuffled sequence index) of Sobol' dimensions
+/// (0, 1), scrambled by `seeds`.
+#[inline(always)]
+pub(super) const fn sobol_2d_at(s: u32, seeds: OwenSeeds) -> Vec2 {
+    // Dimension 0's generator is the identity: its reversed digits are `s`.
+    scrambled_point(s, pascal_reversed(s), seeds)
+}
+
+/// Point `s` of Sobol' dimension 0, scrambled by `seed`.
+#[inline(always)]
+pub(super) const fn sobol_1d_at(s: u32, seed: u32) -> f32 {
+    u32_to_unit_f32(owen_scramble_reversed(s, seed).reverse_bits())
+}
+
 /// The Owen-scrambled van der Corput value (Sobol' dimension 0) of
 /// `index`, shuffled by `stream`.
 #[inline(always)]
-pub(super) const fn sobol_1d(index: u32, stream: u32) -> f32 {
+const fn sobol_1d(index: u32, stream: u32) -> f32 {
     let seeds = seeds_2d(stream);
-    let s = owen_scramble(index, seeds.index);
-    u32_to_unit_f32(owen_scramble_reversed(s, seeds.x).reverse_bits())
+    sobol_1d_at(owen_scramble(index, seeds.index), seeds.x)
 }
 
 /// Point `s` (an already shuffled sequence index) of the 4D Owen-scrambled
@@ -273,11 +313,16 @@ pub(super) const fn sobol_4d_at(s: u32, stream: u32) -> Vec4 {
     let z = stream.rotate_right(5).wrapping_mul(0x6f4f_2a35);
     let w = stream.rotate_right(27).wrapping_mul(0x8f1b_bcdd);
     let (c2, c3) = dimensions_2_3_reversed(s);
+    let (a, b) = reverse_pair(
+        owen_scramble_reversed(s, x),
+        owen_scramble_reversed(pascal_reversed(s), y),
+    );
+    let (c, d) = reverse_pair(owen_scramble_reversed(c2, z), owen_scramble_reversed(c3, w));
     Vec4::new(
-        u32_to_unit_f32(owen_scramble_reversed(s, x).reverse_bits()),
-        u32_to_unit_f32(owen_scramble_reversed(pascal_reversed(s), y).reverse_bits()),
-        u32_to_unit_f32(owen_scramble_reversed(c2, z).reverse_bits()),
-        u32_to_unit_f32(owen_scramble_reversed(c3, w).reverse_bits()),
+        u32_to_unit_f32(a),
+        u32_to_unit_f32(b),
+        u32_to_unit_f32(c),
+        u32_to_unit_f32(d),
     )
 }
 
@@ -298,10 +343,8 @@ impl DomainSampler for Sobol {
     }
     #[inline]
     fn domain_2d(&self, index: u32, stream: u32) -> Vec2 {
-        bits_to_point(<Sobol as DigitalSequence>::point_bits(
-            index,
-            seeds_2d(stream),
-        ))
+        let seeds = seeds_2d(stream);
+        sobol_2d_at(owen_scramble(index, seeds.index), seeds)
     }
     #[inline]
     fn domain_3d(&self, index: u32, stream: u32) -> Vec3 {
@@ -324,10 +367,9 @@ impl DomainSampler for Pmj02 {
     }
     #[inline]
     fn domain_2d(&self, index: u32, stream: u32) -> Vec2 {
-        bits_to_point(<Pmj02 as DigitalSequence>::point_bits(
-            index,
-            seeds_2d(stream),
-        ))
+        let seeds = seeds_2d(stream);
+        let s = owen_scramble(index, seeds.index);
+        scrambled_point(stirling_x(s), stirling_y(s), seeds)
     }
     #[inline]
     fn domain_3d(&self, index: u32, stream: u32) -> Vec3 {

@@ -1,9 +1,9 @@
 use glam::{Vec2, Vec3, Vec4};
 
-use super::padded::{seeds_2d, sobol_4d_at};
+use super::padded::{seeds_2d, sobol_1d_at, sobol_2d_at, sobol_4d_at};
 use super::{Draw, PixelSampler, Root};
 use crate::Error;
-use crate::primitives::{hash_combine, hash_u32, owen_scramble_reversed, u32_to_unit_f32};
+use crate::primitives::{hash_combine, hash_u32};
 use crate::samplers::digital::{OwenSeeds, bits_to_point, scrambled_bits};
 use crate::samplers::sobol::pascal_reversed;
 
@@ -339,14 +339,14 @@ impl PixelSampler for ZSobol {
     fn draw_1d(&self, draw: Draw) -> f32 {
         let seeds = seeds_2d(draw.stream);
         let s = self.sequence_index(draw.pixel_state, draw.index, seeds.index);
-        u32_to_unit_f32(owen_scramble_reversed(s, seeds.x).reverse_bits())
+        sobol_1d_at(s, seeds.x)
     }
 
     #[inline]
     fn draw_2d(&self, draw: Draw) -> Vec2 {
         let seeds = seeds_2d(draw.stream);
         let s = self.sequence_index(draw.pixel_state, draw.index, seeds.index);
-        bits_to_point(scrambled_bits(s, pascal_reversed(s), seeds))
+        sobol_2d_at(s, seeds)
     }
 
     #[inline]

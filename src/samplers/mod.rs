@@ -13,7 +13,7 @@ mod hammersley;
 mod jittered;
 mod multi_jittered;
 mod n_rooks;
-mod pmj02;
+pub(crate) mod pmj02;
 mod random;
 mod regular;
 pub(crate) mod sobol;
