@@ -86,7 +86,7 @@ pub struct Domain<S> {
 impl<S: PixelSampler> Domain<S> {
     /// Sample `index` of `pixel` of `sampler`, at dimension 0 of the root
     /// domain; [`PixelSampler::start`] calls this.
-    #[inline]
+    #[inline(always)]
     pub fn start(sampler: S, pixel: [u32; 2], index: u32) -> Self {
         let root = sampler.root(pixel);
         let (index, key) = sampler.locate(index, root.key);
