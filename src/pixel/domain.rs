@@ -44,8 +44,10 @@ const WEYL: u32 = 0x6a09_e667;
 /// `start`: the sampler's [`root`](PixelSampler::root) (for [`Padded`](crate::Padded)
 /// one 64-bit mix of the pixel). Each draw: one multiply-add, one
 /// [`hash_u32`] and the sampler's kernel. `branch`: one
-/// [`hash_combine`]; `split`: one more and a multiply. `docs/performance.md`
-/// gives the ratios to a PCG hash.
+/// [`hash_combine`]; `split`: one more, a multiply and the sampler's
+/// [`locate`](PixelSampler::locate). `cargo bench --bench speed --
+/// domain-ratio` measures `start` plus one draw against a PCG hash making
+/// two floats, per back end.
 ///
 /// # Limits
 ///

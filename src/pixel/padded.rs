@@ -115,7 +115,7 @@ impl<S: DomainSampler + Send + Sync> PixelSampler for Padded<S> {
     /// The key: a 64-bit mix of `(x, y)` and the frame, so distinct pixels
     /// of one frame never share a key before the final truncation to 32
     /// bits.
-    #[inline]
+    #[inline(always)]
     fn root(&self, [x, y]: [u32; 2]) -> Root {
         let packed = (u64::from(y) << 32 | u64::from(x)) ^ u64::from(self.frame_key) << 32;
         Root {

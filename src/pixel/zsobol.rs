@@ -216,17 +216,25 @@ impl ZSobol {
 
     /// `pixel` on the film, and 0 if it was there or else a nonzero key of
     /// the tile of the film's repetition it fell in.
-    #[inline]
+    #[inline(always)]
     fn on_film(&self, [x, y]: [u32; 2]) -> ([u32; 2], u32) {
         let [width, height] = self.resolution;
         if x < width && y < height {
             ([x, y], 0)
         } else {
-            (
-                [x % width, y % height],
-                hash_combine(x / width, y / height) | 1,
-            )
+            self.wrap_onto_film([x, y])
         }
+    }
+
+    /// [`on_film`](Self::on_film) for a pixel off the film, out of line.
+    #[cold]
+    #[inline(never)]
+    fn wrap_onto_film(&self, [x, y]: [u32; 2]) -> ([u32; 2], u32) {
+        let [width, height] = self.resolution;
+        (
+            [x % width, y % height],
+            hash_combine(x / width, y / height) | 1,
+        )
     }
 
     /// The pixel's Morton index shifted up by `m`: the first sequence index
@@ -342,7 +350,7 @@ impl PixelSampler for ZSobol {
 
     /// The key from the frame (and the tile, off the film), the pixel
     /// state the Morton block start.
-    #[inline]
+    #[inline(always)]
     fn root(&self, pixel: [u32; 2]) -> Root {
         let (pixel, tile) = self.on_film(pixel);
         let key = self.frame_key;
