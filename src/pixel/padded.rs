@@ -8,10 +8,10 @@ use crate::primitives::{
     hash_combine, hash_u32, owen_scramble, owen_scramble_reversed, pattern_seed, permute, rand_u32,
     stratum_to_unit_f32, u32_to_unit_f32,
 };
-use crate::samplers::digital::OwenSeeds;
-use crate::samplers::pmj02::{stirling_x, stirling_y};
+use crate::samplers::sequence::digital::OwenSeeds;
+use crate::samplers::sequence::pmj02::{stirling_x, stirling_y};
 use crate::samplers::sequence::sobol_4d::dimensions_2_3_reversed;
-use crate::samplers::sobol::pascal_reversed;
+use crate::samplers::sequence::sobol::pascal_reversed;
 use crate::{
     AnySampler, CorrelatedMultiJittered, Halton, Hammersley, Jittered, MultiJittered, NRooks,
     Pmj02, Random, Regular, Sampler2D, Sobol,

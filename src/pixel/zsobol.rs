@@ -4,8 +4,8 @@ use super::padded::{seeds_2d, sobol_1d_at, sobol_2d_at, sobol_4d_at};
 use super::{Draw, PixelSampler, Root};
 use crate::Error;
 use crate::primitives::{hash_combine, hash_u32, owen_scramble};
-use crate::samplers::digital::{OwenSeeds, bits_to_point, scrambled_bits};
-use crate::samplers::sobol::pascal_reversed;
+use crate::samplers::sequence::digital::{OwenSeeds, bits_to_point, scrambled_bits};
+use crate::samplers::sequence::sobol::pascal_reversed;
 
 /// The 24 permutations of `{0, 1, 2, 3}` in lexicographic order, each packed
 /// two bits per entry: entry `d` is `(PERMUTATIONS_4[p] >> 2 d) & 3`.
