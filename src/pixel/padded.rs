@@ -36,6 +36,10 @@ use crate::{
 ///   `pattern_seed`: the draws have the same guarantees as `sample_pixel`,
 ///   with other values. What each width gives is [`DomainSampler`]'s table.
 ///
+/// `Padded<S>` is a pixel sampler for every `S:` [`DomainSampler`]; the
+/// crate's samplers all are, and a [`Sampler2D`] of your own becomes one
+/// with `impl DomainSampler for MySampler {}`.
+///
 /// # Cost
 ///
 /// `sample_pixel`: one [`pattern_seed`] (seven [`hash_u32`]) plus the
