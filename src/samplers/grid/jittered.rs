@@ -21,8 +21,9 @@ use crate::{Error, SamplerKind};
 ///   smooth ones, against `n^-1/2` for [`Random`](crate::Random).
 ///
 /// [`Jittered::new`] picks the most square grid with `columns <= rows` and
-/// `columns * rows = n`; for a prime `n` that is `1 x n` strips, stratified in
-/// y only. [`Jittered::with_grid`] takes any shape.
+/// `columns * rows = n`: `4 x 4` for 16, `4 x 8` for 32, and for a prime `n`
+/// `1 x n` strips, stratified in y only. [`Jittered::with_grid`] takes any
+/// shape.
 ///
 /// # Cost
 ///
@@ -34,7 +35,8 @@ use crate::{Error, SamplerKind};
 ///
 /// # Limits
 ///
-/// `columns` and `rows` at most 2^24 and `columns * rows` at most `u32::MAX`.
+/// `columns` and `rows` at most 2^24 (f32 cannot separate more strata) and
+/// `columns * rows` at most `u32::MAX`.
 /// Inside a cell the offset is quantised to the `2^-24` grid. In release
 /// builds an index at or above `len()` returns a point of the set's grid.
 ///

@@ -34,10 +34,9 @@ use crate::{Error, SamplerKind};
 ///
 /// # Limits
 ///
-/// `n` at most 2^24 ([`MultiJittered::MAX_SAMPLES`]), the number of f32
-/// strata in `[0, 1)`. The fine grid is never formed as `n * n`, so nothing
-/// overflows. In release builds an index at or above `len()` returns one of
-/// the set's points.
+/// `n` at most [`MultiJittered::MAX_SAMPLES`]. The fine grid is never
+/// formed as `n * n`, so nothing overflows. In release builds an index at
+/// or above `len()` returns one of the set's points.
 ///
 /// # Examples
 ///
@@ -67,7 +66,8 @@ pub struct MultiJittered {
 }
 
 impl MultiJittered {
-    /// The largest `n` accepted: 2^24, the number of distinct f32 strata.
+    /// The largest `n` accepted: 2^24, as for
+    /// [`NRooks`](crate::NRooks::MAX_SAMPLES).
     pub const MAX_SAMPLES: u32 = MAX_STRATA;
 
     /// A multi-jittered set of `n` points.
