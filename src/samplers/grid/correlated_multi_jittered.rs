@@ -169,7 +169,7 @@ impl CorrelatedMultiJittered {
         let grid = &self.grid;
         CorrelatedMultiJitteredPattern {
             grid,
-            order: Permutation::new(grid.len(), derived_key(pattern_hash, salt::ORDER)),
+            order: grid.cell_order(pattern_hash),
             sub_columns: Permutation::new(grid.rows(), derived_key(pattern_hash, salt::SHUFFLE_X)),
             sub_rows: Permutation::new(grid.columns(), derived_key(pattern_hash, salt::SHUFFLE_Y)),
             jitter: Jitter::new(pattern_hash),

@@ -1,7 +1,7 @@
 use glam::Vec2;
 
 use super::{CellOffset, Grid, GridPattern, Jitter, fill_grid};
-use crate::primitives::{Permutation, derived_key, hash_u32, salt};
+use crate::primitives::{Permutation, hash_u32};
 use crate::simd::Isa;
 use crate::traits::{FillOn, Sampler2D};
 use crate::{Error, SamplerKind};
@@ -102,7 +102,7 @@ impl Jittered {
         let pattern_hash = hash_u32(pattern);
         JitteredPattern {
             grid: &self.grid,
-            order: Permutation::new(self.len(), derived_key(pattern_hash, salt::ORDER)),
+            order: self.grid.cell_order(pattern_hash),
             offset: Jitter::new(pattern_hash),
         }
     }

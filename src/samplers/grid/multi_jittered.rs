@@ -1,7 +1,7 @@
 use glam::Vec2;
 
 use super::{Grid, GridPattern, Jitter, SMALL_TABLE, fill_grid};
-use crate::primitives::{MAX_STRATA, Permutation, derived_key, hash_u32, salt};
+use crate::primitives::{MAX_STRATA, Permutation, hash_u32, salt};
 use crate::simd::Isa;
 use crate::traits::{FillOn, Sampler2D};
 use crate::{Error, SamplerKind};
@@ -228,7 +228,7 @@ impl MultiJittered {
         let pattern_hash = hash_u32(pattern);
         MultiJitteredPattern {
             grid: &self.grid,
-            order: Permutation::new(self.len(), derived_key(pattern_hash, salt::ORDER)),
+            order: self.grid.cell_order(pattern_hash),
             shuffles: HashedLines {
                 columns: self.grid.columns(),
                 rows: self.grid.rows(),

@@ -2,7 +2,7 @@ use glam::Vec2;
 
 use super::jittered::JitteredPattern;
 use super::{Centre, Grid, GridPattern, fill_grid};
-use crate::primitives::{Permutation, derived_key, hash_u32, salt};
+use crate::primitives::hash_u32;
 use crate::simd::Isa;
 use crate::traits::{FillOn, Sampler2D};
 use crate::{Error, SamplerKind};
@@ -89,7 +89,7 @@ impl Regular {
     fn pattern(&self, pattern: u32) -> JitteredPattern<'_, Centre> {
         JitteredPattern {
             grid: &self.grid,
-            order: Permutation::new(self.len(), derived_key(hash_u32(pattern), salt::ORDER)),
+            order: self.grid.cell_order(hash_u32(pattern)),
             offset: Centre,
         }
     }
