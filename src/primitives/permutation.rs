@@ -37,7 +37,7 @@ pub const SHORT_LEN: u32 = 8;
 /// every permutation appears `floor(2^32 / len!)` or `ceil(2^32 / len!)`
 /// times. Longer lengths use a keyed bijective hash of the next power of two
 /// with cycle walking, after Kensler 2013,
-/// whose uniformity `tests/permute.rs` measures (pair frequencies, distinct
+/// whose uniformity `tests/primitives.rs` measures (pair frequencies, distinct
 /// permutations).
 ///
 /// Cost: one hash of `pattern`, then for `len <= 8` up to seven swap steps
@@ -94,7 +94,7 @@ const fn permute_key(pattern: u32) -> u32 {
 /// so each key's top bits come from a different part of `pattern_hash`.
 /// The multiplier is [`hash_u32`]'s first. A bijection of `pattern_hash`
 /// for each salt, so each permutation alone keeps the exact uniformity of
-/// [`permute`]; `tests/permute.rs` measures the joint uniformity.
+/// [`permute`]; `tests/primitives.rs` measures the joint uniformity.
 #[inline(always)]
 pub(crate) const fn derived_key(pattern_hash: u32, salt: u32) -> u32 {
     let k = (pattern_hash ^ salt)
