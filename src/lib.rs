@@ -133,6 +133,7 @@ pub mod primitives;
 mod samplers;
 mod simd;
 mod traits;
+pub mod warp;
 
 pub use error::{Error, InputText};
 pub use pixel::{
