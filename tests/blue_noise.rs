@@ -75,12 +75,12 @@ fn constructors_check_their_input() {
     ));
     for spp in [1, 2, 3, 5, 12, 100, 1 << 16, (1 << 16) + 1, u32::MAX] {
         let sampler = BlueNoise::new(spp, [3840, 2160], 1).unwrap();
-        assert_eq!(sampler.samples_per_pixel(), spp);
+        assert_eq!(sampler.samples_per_pixel(), Some(spp));
         assert_eq!(sampler.count(), Some(spp));
     }
     let progressive = BlueNoise::unbounded([u32::MAX, u32::MAX], 0).unwrap();
     assert_eq!(progressive.count(), None);
-    assert_eq!(progressive.samples_per_pixel(), u32::MAX);
+    assert_eq!(progressive.samples_per_pixel(), None);
     assert_eq!(progressive.resolution(), [u32::MAX, u32::MAX]);
     assert_eq!(BlueNoise::new(3, [5, 6], 9).unwrap().frame(), 9);
 }
@@ -368,29 +368,10 @@ fn frames_are_decorrelated_and_their_average_converges() {
     }
 }
 
-#[cfg(debug_assertions)]
 #[test]
-#[should_panic(expected = "index 4 out of range 0..4")]
-fn an_index_beyond_the_count_panics_in_debug() {
-    BlueNoise::new(4, [8, 8], 0)
-        .unwrap()
-        .sample_pixel([1, 1], 4, 0);
-}
-
-#[cfg(debug_assertions)]
-#[test]
-#[should_panic(expected = "pixel (8, 0) outside the 8 x 8 film")]
-fn a_pixel_outside_the_film_panics_in_debug() {
-    BlueNoise::new(4, [8, 8], 0)
-        .unwrap()
-        .sample_pixel([8, 0], 0, 0);
-}
-
-#[cfg(not(debug_assertions))]
-#[test]
-fn out_of_range_arguments_in_release_continue_the_sequence() {
-    // Release builds do not check: an index past the count is the next
-    // sample of the progressive sampler, a pixel off the film its own.
+fn out_of_range_arguments_continue_the_sequence() {
+    // Debug and release alike: an index past the count is the next sample
+    // of the progressive sampler, a pixel off the film its own.
     let counted = BlueNoise::new(4, [8, 8], 0).unwrap();
     let progressive = BlueNoise::unbounded([1 << 16, 1 << 16], 0).unwrap();
     for (pixel, index) in [([1, 1], 4), ([9, 300], 0), ([7, 7], u32::MAX)] {
@@ -398,5 +379,36 @@ fn out_of_range_arguments_in_release_continue_the_sequence() {
             counted.sample_pixel(pixel, index, 1),
             progressive.sample_pixel(pixel, index, 1)
         );
+    }
+}
+
+#[test]
+fn domain_draws_keep_the_nets() {
+    // Through `start`: each draw's stream is the same for every pixel and
+    // index, so a pixel's 2D draws are prefix nets and its 1D draws
+    // stratified, at every power-of-two prefix, for the first draws and a
+    // branch's.
+    let sampler = BlueNoise::unbounded([640, 480], 5).unwrap();
+    for pixel in [[0, 0], [17, 301], [639, 479]] {
+        for m in 0..=6 {
+            let n = 1u32 << m;
+            let mut film = Vec::new();
+            let mut time = Vec::new();
+            let mut light = Vec::new();
+            for i in 0..n {
+                let mut d = sampler.start(pixel, i);
+                film.push(d.next_2d());
+                time.push(d.next_1d());
+                light.push(d.branch(7).next_2d());
+            }
+            assert!(is_net_base2(&film).unwrap(), "{pixel:?} n {n}");
+            assert!(is_net_base2(&light).unwrap(), "{pixel:?} n {n}");
+            let mut strata: Vec<u32> = time.iter().map(|t| (t * n as f32) as u32).collect();
+            strata.sort_unstable();
+            assert!(
+                strata.iter().zip(0..).all(|(&s, i)| s == i),
+                "{pixel:?} n {n}"
+            );
+        }
     }
 }

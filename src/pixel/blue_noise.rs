@@ -167,12 +167,12 @@ const PIXEL_TABLE: [[[u32; 2]; 256]; 4] = {
 ///
 /// Any count from 1 to `2^32 - 1` ([`new`](Self::new)) or none
 /// ([`unbounded`](Self::unbounded)), any resolution. Nets are exact up to
-/// `2^24` samples, the f32 resolution of `[0, 1)`. The index is not
-/// checked against the count: any `index` in `0..2^32` is a sample of the
-/// sequence, so a release build simply continues it (a debug build panics
-/// at `index >= samples_per_pixel` for a counted sampler). A pixel outside
-/// the resolution is a debug-build panic; a release build returns that
-/// pixel's samples all the same.
+/// `2^24` samples, the f32 resolution of `[0, 1)`. Edges follow the
+/// crate's rule for progressive sequences, in debug and release alike: an
+/// index at or past the count is the next sample of the same sequence
+/// (`new(n, ..)` is a prefix of [`unbounded`](Self::unbounded)), and every
+/// `[u32; 2]` is a pixel of its own, inside the resolution or not (the
+/// resolution is only recorded).
 ///
 /// # Examples
 ///
@@ -234,8 +234,8 @@ impl BlueNoise {
     /// A progressive sampler: no sample count, every index in `0..2^32` is
     /// valid, and the first `n` samples of a pixel are those of
     /// `BlueNoise::new(n, ..)`.
-    /// [`samples_per_pixel`](PixelSampler::samples_per_pixel) returns
-    /// `u32::MAX`; loop over the indices you want instead.
+    /// [`samples_per_pixel`](PixelSampler::samples_per_pixel) is `None`;
+    /// ask for the indices you want.
     ///
     /// # Errors
     ///
@@ -324,27 +324,17 @@ fn unit(t: u32) -> f32 {
 }
 
 impl PixelSampler for BlueNoise {
-    /// The count it was built with, or `u32::MAX` for
+    /// The count it was built with, or `None` for
     /// [`unbounded`](BlueNoise::unbounded).
     #[inline]
-    fn samples_per_pixel(&self) -> u32 {
-        self.samples_per_pixel.unwrap_or(u32::MAX)
+    fn samples_per_pixel(&self) -> Option<u32> {
+        self.samples_per_pixel
     }
 
-    /// Sample `index` of `pixel` in dimension pair `dimension`; see the
-    /// type's docs for out-of-range arguments.
+    /// Sample `index` of `pixel` in dimension pair `dimension`; any index
+    /// and any pixel (see the type's Limits).
     #[inline]
-    fn sample_pixel(&self, pixel: [u32; 2], index: u32, dimension: u32) -> Vec2 {
-        let [x, y] = pixel;
-        debug_assert!(
-            x < self.resolution[0] && y < self.resolution[1],
-            "pixel ({x}, {y}) outside the {} x {} film",
-            self.resolution[0],
-            self.resolution[1]
-        );
-        if let Some(count) = self.samples_per_pixel {
-            debug_assert!(index < count, "index {index} out of range 0..{count}");
-        }
+    fn sample_pixel(&self, [x, y]: [u32; 2], index: u32, dimension: u32) -> Vec2 {
         let pair = hash_combine(hash_u32(self.frame), dimension);
         let tile = hash_combine(pair, hash_combine(x >> TILE_BITS, y >> TILE_BITS));
         let s = owen_scramble(index, hash_u32(pair ^ SALT_INDEX));
@@ -369,6 +359,13 @@ impl PixelSampler for BlueNoise {
                 >> (32 - DIGITS)
         };
         Vec2::new(unit(scramble(qx, SALT_X)), unit(scramble(qy, SALT_Y)))
+    }
+
+    /// A progressive sequence: an index past the count continues it, so
+    /// every prefix stays a net (the crate's edge rule for sequences).
+    #[inline]
+    fn locate(&self, index: u32, key: u32) -> (u32, u32) {
+        (index, key)
     }
 }
 
