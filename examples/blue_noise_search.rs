@@ -8,7 +8,7 @@
 //! ```
 //!
 //! It prints the 32 columns (x digits, y digits), one per line, as
-//! `PIXEL_COLUMNS` in `src/pixel_blue_noise.rs` holds them. The search
+//! `PIXEL_COLUMNS` in `src/pixel/blue_noise.rs` holds them. The search
 //! fixes its frames, its pseudo-random start and its two random restarts
 //! (the optional argument changes their number), so every run prints the
 //! same table; it takes about four minutes of one core. Candidates are
