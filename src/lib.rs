@@ -94,9 +94,6 @@
 //!
 //! - `std` (default): the standard library; implies `alloc`.
 //! - `alloc` (default through `std`): heap allocation for the metrics.
-//! - `rayon` (off): runs the hidden O(n^2) wrap-around L2 oracle that the
-//!   tests compare the O(n log n) metric with on rayon's thread pool;
-//!   results do not depend on the thread count. No public metric needs it.
 //! - `serde` (off): `Serialize` / `Deserialize` for [`SamplerKind`], as its
 //!   kebab-case name (`"n-rooks"`), so settings files can name a sampler.
 //!

@@ -1,0 +1,12 @@
+//! Metrics against independent brute force, closed forms and numerical
+//! integration, and against hostile input. One module per metric family;
+//! `common` holds the shared helpers.
+
+mod bad_input;
+mod common;
+mod distance;
+mod l2;
+mod spectrum;
+mod star;
+mod stratification;
+mod wraparound;
