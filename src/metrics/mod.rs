@@ -87,32 +87,6 @@ pub(crate) fn coord(v: f32) -> f64 {
     f64::from(v) + 0.0
 }
 
-/// Neumaier's compensated sum: the error stays near one rounding of the
-/// total instead of growing with the number of terms.
-#[derive(Clone, Copy, Debug, Default)]
-pub(crate) struct Sum {
-    sum: f64,
-    compensation: f64,
-}
-
-impl Sum {
-    #[inline]
-    pub(crate) fn add(&mut self, value: f64) {
-        let t = self.sum + value;
-        if self.sum.abs() >= value.abs() {
-            self.compensation += (self.sum - t) + value;
-        } else {
-            self.compensation += (value - t) + self.sum;
-        }
-        self.sum = t;
-    }
-
-    #[inline]
-    pub(crate) fn value(self) -> f64 {
-        self.sum + self.compensation
-    }
-}
-
 /// Stable LSD radix sort of `items` by the low `bits` bits of `key`, in
 /// passes of 11 bits (all digit counts taken in one first pass; digits that
 /// are the same for every item are skipped): O(n bits / 11) time, one scratch

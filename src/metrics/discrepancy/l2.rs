@@ -1,13 +1,15 @@
 //! Warnock's L2-star and Hickernell's centred L2 discrepancy: sorted sweeps
-//! with a Fenwick tree.
+//! with a Fenwick tree, in double-double arithmetic.
 
 use alloc::vec;
 use alloc::vec::Vec;
 
 use glam::Vec2;
 
+use super::{key_value, sorted_keys};
 use crate::Error;
-use crate::metrics::{Sum, coord, validate};
+use crate::metrics::double_double::{Dd, two_sum};
+use crate::metrics::{coord, validate};
 
 /// L2-star discrepancy (Warnock 1972): the root mean square of the local
 /// discrepancy over all anchored boxes,
@@ -22,10 +24,19 @@ use crate::metrics::{Sum, coord, validate};
 ///
 /// The double sum is `Σ min(1 - x_i, 1 - x_j) min(1 - y_i, 1 - y_j)`: a sweep in
 /// decreasing `1 - x` with a Fenwick tree over the ranks of `1 - y` (counts and
-/// compensated sums) evaluates it in O(n log n) time and O(n) memory, the 2D
-/// case of Heinrich's 1996 algorithm. The three terms nearly cancel; they are
-/// summed with compensation, so the absolute error of `T²` stays near 1e-16
-/// and the relative error of `T` near `1e-16 / T²`.
+/// sums) evaluates it in O(n log n) time and O(n) memory, the 2D case of
+/// Heinrich's 1996 algorithm; the orders come from radix sorts of the f32
+/// bits.
+///
+/// The three terms are of order 1 and cancel down to `T²`, which is near
+/// `1e-14` for good sets of 2^24 points, so everything is in double-double
+/// arithmetic (Dekker 1971): `1 - x`, `x²` and `1 - x²` of an f32 `x` are exact
+/// there, every product and sum is within about 2^-104 of its terms, and the
+/// cancelling combination `18 n² T² = 2 n² - 9 n Σ_i (..) + 18 Σ Σ (..)` is
+/// formed before the one final division. The absolute error of `T²` stays
+/// below about `1e-30`, so `T` is within 1e-12 relative (in practice 1e-15)
+/// of the exact value for every input of up to 2^24 points, of which even the
+/// best has `T² > 1e-15`.
 ///
 /// # Errors
 ///
@@ -42,22 +53,42 @@ use crate::metrics::{Sum, coord, validate};
 /// ```
 pub fn l2_star_discrepancy(points: &[Vec2]) -> Result<f64, Error> {
     validate(points)?;
-    let nf = points.len() as f64;
-    let mut single = Sum::default();
-    let mut p = Vec::with_capacity(points.len());
-    let mut q = Vec::with_capacity(points.len());
+    let n = points.len();
+    let nf = n as f64;
+    let mut single = Dd::ZERO;
     for pt in points {
         let (x, y) = (coord(pt.x), coord(pt.y));
-        single.add((1.0 - x * x) * (1.0 - y * y));
-        p.push(1.0 - x);
-        q.push(1.0 - y);
+        // x² of an f32 is exact in f64.
+        single = single.plus(one_minus(x * x).mul(one_minus(y * y)));
     }
-    let pairs = sum_min_min(&p, &q);
-    let mut total = Sum::default();
-    total.add(1.0 / 9.0);
-    total.add(-single.value() / (2.0 * nf));
-    total.add(pairs / (nf * nf));
-    Ok(total.value().max(0.0).sqrt())
+    // The rank of 1 - y counts down from the top of the increasing y order;
+    // increasing x is decreasing 1 - x.
+    let mut rank = vec![0u32; n];
+    for (k, &key) in sorted_keys(points, |p| p.y).iter().enumerate() {
+        rank[key as u32 as usize] = (n - 1 - k) as u32;
+    }
+    let sweep: Vec<Entry> = sorted_keys(points, |p| p.x)
+        .iter()
+        .map(|&key| {
+            let i = key as u32 as usize;
+            Entry {
+                p: key_value(key),
+                q: points[i].y,
+                rank: rank[i],
+            }
+        })
+        .collect();
+    drop(rank);
+    let pairs = sum_min_min(&sweep, |v| one_minus(coord(v)));
+    // 18 n² T² = 2 n² - 9 n Σ (1 - x²)(1 - y²) + 18 Σ Σ min min; 2 n² and
+    // 9 n are exact in f64 for n below 2^26.
+    let total = Dd {
+        hi: 2.0 * nf * nf,
+        lo: 0.0,
+    }
+    .sub(single.mul_f64(9.0 * nf))
+    .add(pairs.mul_f64(18.0));
+    Ok((total.value() / (18.0 * nf * nf)).max(0.0).sqrt())
 }
 
 /// Centred L2 discrepancy (Hickernell 1998), with `u = x - 1/2`:
@@ -73,8 +104,12 @@ pub fn l2_star_discrepancy(points: &[Vec2]) -> Result<f64, Error> {
 /// Each pair factor is `1 + min(|u_i|, |u_j|)` when both points lie on the same
 /// side of 1/2 and 1 otherwise, so the double sum splits into 1D sums over
 /// each half and 2D sums of `min · min` over each quadrant, each evaluated by
-/// a sorted sweep with a Fenwick tree: O(n log n) time, O(n) memory,
-/// compensated sums.
+/// a sorted sweep with a Fenwick tree: O(n log n) time, O(n) memory. As in
+/// [`l2_star_discrepancy`], every value is a double-double (`|x - 1/2|` of an
+/// f32 is exact there) and the cancelling combination
+/// `144 n² CD² = 25 n² - 288 n Σ_i (..) + 144 Σ Σ (..)` is formed before the
+/// final division, so `CD` is within 1e-12 relative of the exact value for
+/// every input of up to 2^24 points.
 ///
 /// # Errors
 ///
@@ -91,103 +126,160 @@ pub fn l2_star_discrepancy(points: &[Vec2]) -> Result<f64, Error> {
 /// ```
 pub fn centered_l2_discrepancy(points: &[Vec2]) -> Result<f64, Error> {
     validate(points)?;
-    let nf = points.len() as f64;
+    let n = points.len();
+    let nf = n as f64;
     // Factors written as 1 + g, so the constants cancel exactly up front:
     // (13/12)² - 2 + 1 = 25/144.
-    let mut single = Sum::default();
-    // |u| per point, grouped by side in x, in y, and by quadrant.
-    let mut halves_x: [Vec<f64>; 2] = [Vec::new(), Vec::new()];
-    let mut halves_y: [Vec<f64>; 2] = [Vec::new(), Vec::new()];
-    let mut quadrants: [(Vec<f64>, Vec<f64>); 4] = Default::default();
+    let mut single = Dd::ZERO;
     for pt in points {
-        let (ux, uy) = (coord(pt.x) - 0.5, coord(pt.y) - 0.5);
-        let (ax, ay) = (ux.abs(), uy.abs());
-        let gx = 0.5 * ax - 0.5 * ux * ux;
-        let gy = 0.5 * ay - 0.5 * uy * uy;
-        single.add(gx + gy + gx * gy);
-        let (sx, sy) = (usize::from(ux >= 0.0), usize::from(uy >= 0.0));
-        halves_x[sx].push(ax);
-        halves_y[sy].push(ay);
-        let quadrant = &mut quadrants[2 * sx + sy];
-        quadrant.0.push(ax);
-        quadrant.1.push(ay);
+        let g = |v: f32| {
+            let a = distance_to_half(v);
+            a.sub(a.mul(a)).mul_f64(0.5)
+        };
+        let (gx, gy) = (g(pt.x), g(pt.y));
+        single = single.plus(gx.add(gy).add(gx.mul(gy)));
     }
-    let mut pairs = Sum::default();
-    for half in halves_x.iter_mut().chain(halves_y.iter_mut()) {
-        pairs.add(sum_min_1d(half));
+    let upper = |v: f32| v >= 0.5;
+    let keys_x = sorted_keys(points, |p| p.x);
+    let keys_y = sorted_keys(points, |p| p.y);
+    // |u| decreases along the increasing order below 1/2 and along the
+    // decreasing order above it.
+    let mut pairs = Dd::ZERO;
+    for keys in [&keys_x, &keys_y] {
+        let values = || keys.iter().map(|&k| key_value(k));
+        let lower = values().filter(|&v| !upper(v));
+        let higher = values().rev().filter(|&v| upper(v));
+        pairs = pairs.add(sum_min_1d(lower.map(distance_to_half)));
+        pairs = pairs.add(sum_min_1d(higher.map(distance_to_half)));
     }
-    for (p, q) in &quadrants {
-        pairs.add(sum_min_min(p, q));
+    // Per quadrant (x side, y side): its points in decreasing |u_x|, each
+    // with the rank of its |u_y| among them.
+    let quadrant = |p: Vec2| 2 * usize::from(upper(p.x)) + usize::from(upper(p.y));
+    let mut sizes = [0u32; 4];
+    for p in points {
+        sizes[quadrant(*p)] += 1;
     }
-    let mut total = Sum::default();
-    total.add(25.0 / 144.0);
-    total.add(-2.0 * single.value() / nf);
-    total.add(pairs.value() / (nf * nf));
-    Ok(total.value().max(0.0).sqrt())
-}
-
-/// `Σ_i Σ_j min(p_i, p_j)` over all ordered pairs (the diagonal included);
-/// sorts `p`.
-fn sum_min_1d(p: &mut [f64]) -> f64 {
-    // In decreasing order the k-th value is the minimum of 2k + 1 ordered pairs.
-    p.sort_unstable_by(|a, b| b.total_cmp(a));
-    let mut s = Sum::default();
-    for (k, &v) in p.iter().enumerate() {
-        s.add(v * (2 * k + 1) as f64);
-    }
-    s.value()
-}
-
-/// `Σ_i Σ_j min(p_i, p_j) min(q_i, q_j)` over all ordered pairs (the diagonal
-/// included), in O(n log n).
-///
-/// Points are swept in decreasing `p`, so every earlier point has the larger
-/// `p`; a Fenwick tree over the ranks of `q` returns how many earlier points
-/// have a larger `q` (each contributes `q_i`) and the sum of the smaller ones.
-fn sum_min_min(p: &[f64], q: &[f64]) -> f64 {
-    let n = p.len();
-    if n == 0 {
-        return 0.0;
-    }
-    let mut by_q: Vec<u32> = (0..n as u32).collect();
-    by_q.sort_unstable_by(|&a, &b| q[a as usize].total_cmp(&q[b as usize]));
     let mut rank = vec![0u32; n];
-    for (r, &i) in by_q.iter().enumerate() {
-        rank[i as usize] = r as u32;
+    let mut seen = [0u32; 4];
+    for &key in &keys_y {
+        let i = key as u32 as usize;
+        let q = quadrant(points[i]);
+        rank[i] = if upper(key_value(key)) {
+            seen[q]
+        } else {
+            sizes[q] - 1 - seen[q]
+        };
+        seen[q] += 1;
     }
-    let mut by_p: Vec<u32> = (0..n as u32).collect();
-    by_p.sort_unstable_by(|&a, &b| p[b as usize].total_cmp(&p[a as usize]));
+    drop(keys_y);
+    let mut sweeps: [Vec<Entry>; 4] = Default::default();
+    for (sweep, &size) in sweeps.iter_mut().zip(&sizes) {
+        sweep.reserve_exact(size as usize);
+    }
+    for &key in &keys_x {
+        let i = key as u32 as usize;
+        let p = points[i];
+        sweeps[quadrant(p)].push(Entry {
+            p: p.x,
+            q: p.y,
+            rank: rank[i],
+        });
+    }
+    drop((keys_x, rank));
+    for (q, sweep) in sweeps.iter_mut().enumerate() {
+        if q >= 2 {
+            sweep.reverse();
+        }
+        pairs = pairs.add(sum_min_min(sweep, distance_to_half));
+    }
+    // 144 n² CD² = 25 n² - 288 n Σ (..) + 144 Σ Σ (..).
+    let total = Dd {
+        hi: 25.0 * nf * nf,
+        lo: 0.0,
+    }
+    .sub(single.mul_f64(288.0 * nf))
+    .add(pairs.mul_f64(144.0));
+    Ok((total.value() / (144.0 * nf * nf)).max(0.0).sqrt())
+}
 
-    let mut counts = vec![0u32; n + 1];
-    let mut sums = vec![Sum::default(); n + 1];
-    let mut off = Sum::default();
-    let mut diagonal = Sum::default();
-    for (seen, &i) in by_p.iter().enumerate() {
-        let i = i as usize;
-        let (pi, qi) = (p[i], q[i]);
-        let r = rank[i] as usize;
-        // Earlier points with a lower q rank: their count and q sum.
-        let (mut below, mut below_sum) = (0usize, Sum::default());
+/// `1 - v`, exactly (TwoSum).
+#[inline]
+fn one_minus(v: f64) -> Dd {
+    let (hi, lo) = two_sum(1.0, -v);
+    Dd { hi, lo }
+}
+
+/// `|v - 1/2|` of an f32, exactly.
+#[inline]
+fn distance_to_half(v: f32) -> Dd {
+    let (hi, lo) = two_sum(coord(v), -0.5);
+    let d = Dd { hi, lo };
+    if hi < 0.0 { d.neg() } else { d }
+}
+
+/// `Σ_i Σ_j min(a_i, a_j)` over all ordered pairs (the diagonal included),
+/// given the values in non-increasing order.
+fn sum_min_1d(decreasing: impl Iterator<Item = Dd>) -> Dd {
+    // In decreasing order the k-th value is the minimum of 2k + 1 ordered pairs.
+    let mut s = Dd::ZERO;
+    for (k, a) in decreasing.enumerate() {
+        s = s.plus(a.mul_f64((2 * k + 1) as f64));
+    }
+    s
+}
+
+/// One point of a [`sum_min_min`] sweep: its two coordinates and the rank
+/// of its `q` value.
+#[derive(Clone, Copy, Debug)]
+struct Entry {
+    p: f32,
+    q: f32,
+    rank: u32,
+}
+
+/// One Fenwick node: how many points and the sum of their `q` values.
+#[derive(Clone, Copy, Debug, Default)]
+struct Node {
+    count: u32,
+    sum: Dd,
+}
+
+/// `Σ_i Σ_j min(p_i, p_j) min(q_i, q_j)` over all ordered pairs of the
+/// points of `sweep` (the diagonal included), with `p = value(entry.p)` and
+/// `q = value(entry.q)`, in O(n log n).
+///
+/// `sweep` lists the points in non-increasing `p`, and each one's `rank` is
+/// its position in non-decreasing `q` (a permutation of `0..sweep.len()`).
+/// Every earlier point of the sweep has the larger `p`; a Fenwick tree over
+/// the ranks of `q` returns how many earlier points have a larger `q` (each
+/// contributes `q_i`) and the sum of the smaller ones. Ties count the same
+/// either way.
+fn sum_min_min(sweep: &[Entry], value: impl Fn(f32) -> Dd) -> Dd {
+    let len = sweep.len();
+    let mut tree = vec![Node::default(); len + 1];
+    let (mut off, mut diagonal) = (Dd::ZERO, Dd::ZERO);
+    for (seen, e) in sweep.iter().enumerate() {
+        let (pi, qi) = (value(e.p), value(e.q));
+        let r = e.rank as usize;
+        let (mut below, mut below_sum) = (0u32, Dd::ZERO);
         let mut k = r;
         while k > 0 {
-            below += counts[k] as usize;
-            below_sum.add(sums[k].value());
+            below += tree[k].count;
+            below_sum = below_sum.plus(tree[k].sum);
             k &= k - 1;
         }
-        let above = seen - below;
-        off.add(pi * (qi * above as f64 + below_sum.value()));
-        diagonal.add(pi * qi);
+        let above = seen as u32 - below;
+        let inner = qi.mul_f64(f64::from(above)).add(below_sum);
+        off = off.plus(inner.mul(pi));
+        diagonal = diagonal.plus(pi.mul(qi));
         let mut k = r + 1;
-        while k <= n {
-            counts[k] += 1;
-            sums[k].add(qi);
+        while k <= len {
+            tree[k].count += 1;
+            tree[k].sum = tree[k].sum.plus(qi);
             k += k & k.wrapping_neg();
         }
     }
-    let mut total = Sum::default();
-    total.add(2.0 * off.value());
-    total.add(diagonal.value());
-    total.value()
+    off.mul_f64(2.0).add(diagonal)
 }
 
 #[cfg(test)]
@@ -206,11 +298,39 @@ mod tests {
 
     #[test]
     fn sum_min_min_matches_brute_force_with_ties() {
-        let p = [0.5, 0.25, 0.5, 0.75, 0.0, 0.25];
-        let q = [0.125, 0.125, 0.875, 0.5, 0.5, 0.125];
-        assert!((sum_min_min(&p, &q) - brute_min_min(&p, &q)).abs() < 1e-14);
-        let mut p1 = p;
-        let ones = [1.0; 6];
-        assert!((sum_min_1d(&mut p1) - brute_min_min(&p, &ones)).abs() < 1e-14);
+        let p: [f32; 6] = [0.5, 0.25, 0.5, 0.75, 0.0, 0.25];
+        let q: [f32; 6] = [0.125, 0.125, 0.875, 0.5, 0.5, 0.125];
+        let (p64, q64) = (p.map(f64::from), q.map(f64::from));
+        let dd = |v: f32| Dd {
+            hi: f64::from(v),
+            lo: 0.0,
+        };
+        // Tied values in both orders, broken either way.
+        for flip in [false, true] {
+            let tie = |a: usize, b: usize| if flip { b.cmp(&a) } else { a.cmp(&b) };
+            let mut order: Vec<usize> = (0..6).collect();
+            order.sort_by(|&a, &b| p[b].total_cmp(&p[a]).then(tie(a, b)));
+            let mut by_q: Vec<usize> = (0..6).collect();
+            by_q.sort_by(|&a, &b| q[a].total_cmp(&q[b]).then(tie(a, b)));
+            let mut rank = [0u32; 6];
+            for (r, &i) in by_q.iter().enumerate() {
+                rank[i] = r as u32;
+            }
+            let sweep: Vec<Entry> = order
+                .iter()
+                .map(|&i| Entry {
+                    p: p[i],
+                    q: q[i],
+                    rank: rank[i],
+                })
+                .collect();
+            // Dyadic values: both sums are exact.
+            assert_eq!(sum_min_min(&sweep, dd).value(), brute_min_min(&p64, &q64));
+            let decreasing = order.iter().map(|&i| dd(p[i]));
+            assert_eq!(
+                sum_min_1d(decreasing).value(),
+                brute_min_min(&p64, &[1.0; 6])
+            );
+        }
     }
 }

@@ -6,9 +6,10 @@ use alloc::vec::Vec;
 
 use glam::Vec2;
 
+use super::order_by;
 use crate::Error;
 use crate::metrics::double_double::{Dd, two_prod, two_sum};
-use crate::metrics::{coord, radix_sort, validate};
+use crate::metrics::{coord, validate};
 
 /// Wrap-around L2 discrepancy (Hickernell 1998): the L2 discrepancy over all
 /// boxes of the torus,
@@ -135,19 +136,6 @@ fn wraparound_sweep(points: &[Vec2]) -> f64 {
         .add(g_x.add(g_y).mul_f64(1.5))
         .add(h);
     total.value() / (nf * nf)
-}
-
-/// Indices of `points` in increasing order of one coordinate (`-0.0` as 0;
-/// ties in index order), by a radix sort of the f32 bits, which order like
-/// the values for the non-negative floats validation lets through.
-fn order_by(points: &[Vec2], coordinate: impl Fn(&Vec2) -> f32) -> Vec<u32> {
-    let mut keys: Vec<u64> = points
-        .iter()
-        .enumerate()
-        .map(|(i, p)| (u64::from(coordinate(p).to_bits() & 0x7fff_ffff) << 32) | i as u64)
-        .collect();
-    radix_sort(&mut keys, |&k| k >> 32, 31);
-    keys.into_iter().map(|k| k as u32).collect()
 }
 
 /// Over the unordered pairs, with `u` in increasing order:
