@@ -3,8 +3,10 @@
 //! `common` holds the shared helpers.
 
 mod bad_input;
+mod closed_forms;
 mod common;
 mod distance;
+mod exact;
 mod l2;
 mod spectrum;
 mod star;
