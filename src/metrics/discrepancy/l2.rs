@@ -43,7 +43,7 @@ use crate::metrics::{coord, validate};
 ///
 /// # Errors
 ///
-/// As [`star_discrepancy`].
+/// As [`star_discrepancy`](crate::metrics::star_discrepancy).
 ///
 /// # Examples
 ///
@@ -116,7 +116,7 @@ pub fn l2_star_discrepancy(points: &[Vec2]) -> Result<f64, Error> {
 ///
 /// # Errors
 ///
-/// As [`star_discrepancy`].
+/// As [`star_discrepancy`](crate::metrics::star_discrepancy).
 ///
 /// # Examples
 ///

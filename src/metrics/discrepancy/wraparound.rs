@@ -47,7 +47,7 @@ use crate::metrics::{coord, validate};
 ///
 /// # Errors
 ///
-/// As [`star_discrepancy`].
+/// As [`star_discrepancy`](crate::metrics::star_discrepancy).
 ///
 /// # Examples
 ///
