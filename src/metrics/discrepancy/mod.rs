@@ -15,18 +15,11 @@ use glam::Vec2;
 
 use super::radix_sort;
 
-/// Indices of `points` in increasing order of one coordinate (`-0.0` as 0;
-/// ties in index order), by a radix sort of the f32 bits, which order like
-/// the values for the non-negative floats validation lets through.
-pub(super) fn order_by(points: &[Vec2], coordinate: impl Fn(&Vec2) -> f32) -> Vec<u32> {
-    sorted_keys(points, coordinate)
-        .into_iter()
-        .map(|k| k as u32)
-        .collect()
-}
-
-/// As [`order_by`], with each index kept next to its coordinate: the keys
-/// `bits << 32 | index`, sorted. [`key_value`] reads the coordinate back.
+/// The keys `bits << 32 | index` of `points` sorted, that is, the indices in
+/// increasing order of one coordinate (`-0.0` as 0; ties in index order)
+/// with each coordinate kept next to its index ([`key_value`] reads it
+/// back), by a radix sort of the f32 bits, which order like the values for
+/// the non-negative floats validation lets through.
 pub(super) fn sorted_keys(points: &[Vec2], coordinate: impl Fn(&Vec2) -> f32) -> Vec<u64> {
     let mut keys: Vec<u64> = points
         .iter()

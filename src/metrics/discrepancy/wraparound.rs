@@ -6,7 +6,7 @@ use alloc::vec::Vec;
 
 use glam::Vec2;
 
-use super::order_by;
+use super::{key_value, sorted_keys};
 use crate::Error;
 use crate::metrics::double_double::{Dd, two_prod, two_sum};
 use crate::metrics::{coord, validate};
@@ -72,13 +72,11 @@ pub fn wraparound_l2_discrepancy(points: &[Vec2]) -> Result<f64, Error> {
 fn wraparound_sweep(points: &[Vec2]) -> f64 {
     let n = points.len();
     let nf = n as f64;
-    let xs: Vec<f64> = points.iter().map(|p| coord(p.x)).collect();
-    let ys: Vec<f64> = points.iter().map(|p| coord(p.y)).collect();
-
     // Moments S_ab = Σ x^a y^b. x y, x², y² are exact in f64 (f32 inputs);
     // x² y, x y², x² y² are exact as double-double products.
     let mut s = [[Dd::ZERO; 3]; 3];
-    for (&x, &y) in xs.iter().zip(&ys) {
+    for p in points {
+        let (x, y) = (coord(p.x), coord(p.y));
         let xy = x * y;
         s[1][0] = s[1][0].plus_f64(x);
         s[0][1] = s[0][1].plus_f64(y);
@@ -102,23 +100,40 @@ fn wraparound_sweep(points: &[Vec2]) -> f64 {
         .add(s[2][0].mul(s[0][2]).mul_f64(2.0))
         .add(s[1][1].mul(s[1][1]).mul_f64(4.0));
 
-    let order_x = order_by(points, |p| p.x);
-    let order_y = order_by(points, |p| p.y);
     // The sweeps read the coordinates in sorted order, gathered once so that
-    // they stream through memory.
-    let gather =
-        |order: &[u32], a: &[f64]| -> Vec<f64> { order.iter().map(|&i| a[i as usize]).collect() };
-    let (x_by_x, y_by_x) = (gather(&order_x, &xs), gather(&order_x, &ys));
-    let (abs_dy, dx2_abs_dy) = absolute_sweep(&gather(&order_y, &ys), &gather(&order_y, &xs));
-    let (abs_dx, abs_dx_dy2) = absolute_sweep(&x_by_x, &y_by_x);
+    // they stream through memory; one order at a time, so that at most one
+    // pair of gathered copies is alive.
+    let sorted = |keys: &[u64], other: fn(&Vec2) -> f32| -> (Vec<f64>, Vec<f64>) {
+        let by = keys.iter().map(|&k| coord(key_value(k))).collect();
+        let rest = keys
+            .iter()
+            .map(|&k| coord(other(&points[k as u32 as usize])))
+            .collect();
+        (by, rest)
+    };
     let mut rank = vec![0u32; n];
-    for (r, &i) in order_y.iter().enumerate() {
-        rank[i as usize] = r as u32;
-    }
-    let rank_by_x: Vec<u32> = order_x.iter().map(|&i| rank[i as usize]).collect();
-    drop((order_x, order_y, rank));
-    let concordant = dominance_sweep_fixed(&x_by_x, &y_by_x, &rank_by_x)
-        .unwrap_or_else(|| dominance_sweep(&x_by_x, &y_by_x, &rank_by_x));
+    let (abs_dy, dx2_abs_dy) = {
+        let keys_y = sorted_keys(points, |p| p.y);
+        for (r, &k) in keys_y.iter().enumerate() {
+            rank[k as u32 as usize] = r as u32;
+        }
+        let (y_by_y, x_by_y) = sorted(&keys_y, |p| p.x);
+        drop(keys_y);
+        absolute_sweep(&y_by_y, &x_by_y)
+    };
+    let keys_x = sorted_keys(points, |p| p.x);
+    let rank_by_x: Vec<u32> = keys_x.iter().map(|&k| rank[k as u32 as usize]).collect();
+    drop(rank);
+    let (x_by_x, y_by_x) = sorted(&keys_x, |p| p.y);
+    drop(keys_x);
+    let (abs_dx, abs_dx_dy2) = absolute_sweep(&x_by_x, &y_by_x);
+    let concordant = match to_fixed(&x_by_x, &y_by_x, &rank_by_x) {
+        Some(fixed) => {
+            drop((x_by_x, y_by_x, rank_by_x));
+            dominance_sweep_fixed(&fixed)
+        }
+        None => dominance_sweep(&x_by_x, &y_by_x, &rank_by_x),
+    };
     // Σ_{i<j} (x_j - x_i)(y_j - y_i) over unordered pairs = n S11 - S10 S01.
     let product = s[1][1].mul_f64(nf).sub(s[1][0].mul(s[0][1]));
     // Unordered Σ |dx| |dy| = concordant part twice minus the product sum.
@@ -244,25 +259,33 @@ fn dominance_sweep(xs: &[f64], ys: &[f64], ranks: &[u32]) -> Dd {
     t[0].sub(t[1]).sub(t[2]).add(t[3])
 }
 
-/// [`dominance_sweep`] in exact integer arithmetic, for the usual case where
-/// every coordinate is a multiple of 2^-32 (as every sampler's output and
-/// every f32 at or above 2^-8 is); `None` otherwise. With `X = 2^32 x`, the
-/// Fenwick sums of `X`, `Y` and `X Y` and the four sums over `j` stay below
-/// `n² 2^64`, so u128 holds them exactly for n up to 2^31.
-fn dominance_sweep_fixed(xs: &[f64], ys: &[f64], ranks: &[u32]) -> Option<Dd> {
+/// The points for [`dominance_sweep_fixed`] as `[X, Y, rank]` with
+/// `X = 2^32 x`, when every coordinate is a multiple of 2^-32 (as every
+/// sampler's output and every f32 at or above 2^-8 is) and n is below 2^31;
+/// `None` otherwise.
+fn to_fixed(xs: &[f64], ys: &[f64], ranks: &[u32]) -> Option<Vec<[u32; 3]>> {
     const ONE: f64 = 4_294_967_296.0; // 2^32
-    let n = xs.len();
-    if n >= 1 << 31 {
+    if xs.len() >= 1 << 31 {
         return None;
     }
+    // Coordinates are below 1, so X fits in a u32.
     let fixed = |v: f64| {
         let scaled = v * ONE;
-        (scaled == libm::floor(scaled)).then_some(scaled as u64)
+        (scaled == libm::floor(scaled)).then_some(scaled as u32)
     };
-    let mut points = Vec::with_capacity(n);
+    let mut points = Vec::with_capacity(xs.len());
     for ((&x, &y), &r) in xs.iter().zip(ys).zip(ranks) {
-        points.push((fixed(x)?, fixed(y)?, r));
+        points.push([fixed(x)?, fixed(y)?, r]);
     }
+    Some(points)
+}
+
+/// [`dominance_sweep`] in exact integer arithmetic, on the points of
+/// [`to_fixed`]. The Fenwick sums of `X`, `Y` and `X Y` and the four sums
+/// over `j` stay below `n² 2^64`, so u128 holds them exactly for n up to 2^31.
+fn dominance_sweep_fixed(points: &[[u32; 3]]) -> Dd {
+    const ONE: f64 = 4_294_967_296.0; // 2^32
+    let n = points.len();
     #[derive(Clone, Copy, Default)]
     struct Node {
         count: u64,
@@ -275,16 +298,16 @@ fn dominance_sweep_fixed(xs: &[f64], ys: &[f64], ranks: &[u32]) -> Option<Dd> {
     const RUN: usize = 8;
     let blocks = n.div_ceil(RUN);
     let mut tree = vec![Node::default(); blocks + 1];
-    let mut slots = vec![[0u64; 3]; n];
+    let mut slots = vec![[0u32; 3]; n];
     let mut t = [0u128; 4];
-    for (xj, yj, r) in points {
+    for &[xj, yj, r] in points {
         let r = r as usize;
         let block = r / RUN;
         let mut below = Node::default();
         for &[x, y, c] in &slots[block * RUN..r] {
-            below.count += c;
-            below.x += x;
-            below.y += y;
+            below.count += u64::from(c);
+            below.x += u64::from(x);
+            below.y += u64::from(y);
             below.xy += u128::from(x) * u128::from(y);
         }
         let mut k = block;
@@ -306,8 +329,8 @@ fn dominance_sweep_fixed(xs: &[f64], ys: &[f64], ranks: &[u32]) -> Option<Dd> {
         while k <= blocks {
             let node = &mut tree[k];
             node.count += 1;
-            node.x += xj;
-            node.y += yj;
+            node.x += u64::from(xj);
+            node.y += u64::from(yj);
             node.xy += xy;
             k += k & k.wrapping_neg();
         }
@@ -317,10 +340,10 @@ fn dominance_sweep_fixed(xs: &[f64], ys: &[f64], ranks: &[u32]) -> Option<Dd> {
     let hi = total as f64;
     let rest = total as i128 - hi as i128;
     let scale = 1.0 / (ONE * ONE);
-    Some(Dd {
+    Dd {
         hi: hi * scale,
         lo: rest as f64 * scale,
-    })
+    }
 }
 
 /// The direct O(n²) double sum for [`wraparound_l2_discrepancy`], kept as the
@@ -433,7 +456,7 @@ mod tests {
             for (r, &i) in by_y.iter().enumerate() {
                 ranks[i] = r as u32;
             }
-            let fixed = dominance_sweep_fixed(&xs, &ys, &ranks).unwrap();
+            let fixed = dominance_sweep_fixed(&to_fixed(&xs, &ys, &ranks).unwrap());
             let float = dominance_sweep(&xs, &ys, &ranks);
             let mut brute = 0.0;
             for j in 0..n {
@@ -447,6 +470,6 @@ mod tests {
             assert!(diff <= 1e-28 * fixed.value().max(1.0), "n = {n}: {diff:e}");
             assert!((fixed.value() - brute).abs() <= 1e-12 * brute.max(1.0));
         }
-        assert_eq!(dominance_sweep_fixed(&[1e-30], &[0.5], &[0]), None);
+        assert_eq!(to_fixed(&[1e-30], &[0.5], &[0]), None);
     }
 }
