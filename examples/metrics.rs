@@ -94,7 +94,12 @@ pub fn parse_grid(text: &str) -> Result<(u32, u32), String> {
     let side = |s: &str| s.trim().parse::<u32>().ok().filter(|&v| v > 0);
     text.split_once(['x', 'X'])
         .and_then(|(m, k)| Some((side(m)?, side(k)?)))
-        .ok_or_else(|| format!("{text:?} is not a grid MxK of two whole numbers from 1, e.g. 8x8"))
+        .ok_or_else(|| {
+            format!(
+                "{} is not a grid MxK of two whole numbers from 1, e.g. 8x8",
+                shared::quoted(text)
+            )
+        })
 }
 
 /// Why [`read_points`] stopped.

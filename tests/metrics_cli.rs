@@ -403,3 +403,16 @@ fn a_field_that_fits_is_quoted_to_80_characters() {
     );
     assert_eq!(err, expected);
 }
+
+#[test]
+fn a_long_bad_argument_is_quoted_to_80_characters() {
+    let long = format!("{}\nx4", "9".repeat(1000));
+    let (status, out, err) = run(&["--stratified", &long], b"0.5,0.5\n");
+    assert_eq!((status, out.as_str()), (2, ""));
+    assert_eq!(err.lines().count(), 1, "{err:?}");
+    assert!(
+        err.contains(&format!("\"{}...\" is not a grid", "9".repeat(80))),
+        "{err}"
+    );
+    assert!(err.len() < 300, "{} bytes", err.len());
+}
