@@ -283,18 +283,15 @@ fn error_is_blue_at_every_prefix() {
     // 128 x 128 pixels, 8 frames, pairs 0 and 2: the blurred RMSE against
     // Padded<Sobol>'s on the same prefixes. docs/blue_noise.md measures
     // 256 x 256 over 16 frames; this smaller film is noisier, so the
-    // bound is looser than the docs' targets (0.9, 0.6 at powers of two).
+    // bound is looser than the targets (0.9 everywhere, 0.6 at
+    // powers of two, which the footprint integrand misses: see the docs).
     for dimension in [0, 2] {
         for footprint in [false, true] {
             let base = errors(padded, 128, 16, 0..8, footprint, dimension, true);
             let ours = errors(blue_noise(128), 128, 16, 0..8, footprint, dimension, true);
             for n in 0..16 {
                 let ratio = (ours.blurred[n] / base.blurred[n]).sqrt();
-                let bound = if (n + 1).is_power_of_two() {
-                    0.75
-                } else {
-                    0.95
-                };
+                let bound = if footprint { 0.97 } else { 0.6 };
                 assert!(
                     ratio < bound,
                     "pair {dimension} footprint {footprint} n {}: blurred RMSE ratio {ratio:.3}",

@@ -28,6 +28,7 @@ fn needs_power_of_two(kind: PixelSamplerKind) -> bool {
         kind,
         PixelSamplerKind::Padded(SamplerKind::Sobol | SamplerKind::Pmj02 | SamplerKind::Halton)
             | PixelSamplerKind::ZSobol
+            | PixelSamplerKind::BlueNoise
     )
 }
 
@@ -362,7 +363,7 @@ fn every_pixel_sampler_parses_by_name_alias_and_any_case() {
         let sampler = kind.build(16, [32, 32], 0).unwrap();
         assert_eq!(sampler.kind(), kind);
     }
-    assert_eq!(PixelSamplerKind::all().count(), SamplerKind::ALL.len() + 1);
+    assert_eq!(PixelSamplerKind::all().count(), SamplerKind::ALL.len() + 2);
     for (alias, kind) in [
         ("cmj", SamplerKind::CorrelatedMultiJittered),
         ("MJ", SamplerKind::MultiJittered),
