@@ -62,6 +62,7 @@ fn visit_concrete(any: &AnySampler, v: &mut impl Visit) -> bool {
         AnySampler::NRooks(s) => v.visit(name, s),
         AnySampler::MultiJittered(s) => v.visit(name, s),
         AnySampler::CorrelatedMultiJittered(s) => v.visit(name, s),
+        AnySampler::BlueMultiJittered(s) => v.visit(name, s),
         _ => return false,
     }
     true

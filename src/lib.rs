@@ -140,8 +140,8 @@ pub use pixel::{Padded, PixelCursor, PixelSampler};
 pub use primitives::pattern_seed;
 pub use sampler::Sampler2D;
 pub use samplers::{
-    AnySampler, CorrelatedMultiJittered, Halton, Hammersley, Jittered, LatinHypercube,
-    MultiJittered, NRooks, Pmj02, Random, Regular, SamplerKind, Sobol, ZSobol,
+    AnySampler, BlueMultiJittered, CorrelatedMultiJittered, Halton, Hammersley, Jittered,
+    LatinHypercube, MultiJittered, NRooks, Pmj02, Random, Regular, SamplerKind, Sobol, ZSobol,
 };
 
 // The README's usage example runs as a doctest.

@@ -6,6 +6,7 @@ mod sequence;
 #[macro_use]
 mod grid;
 
+mod blue_multi_jittered;
 mod correlated_multi_jittered;
 mod digital;
 mod halton;
@@ -24,6 +25,7 @@ use core::str::FromStr;
 
 use glam::Vec2;
 
+pub use blue_multi_jittered::BlueMultiJittered;
 pub use correlated_multi_jittered::CorrelatedMultiJittered;
 pub use halton::Halton;
 pub use hammersley::Hammersley;
@@ -152,6 +154,7 @@ sampler_kinds! {
     NRooks => "n-rooks",
     MultiJittered => "multi-jittered",
     CorrelatedMultiJittered => "correlated-multi-jittered",
+    BlueMultiJittered => "blue-multi-jittered",
     Hammersley => "hammersley",
     Halton => "halton",
     Sobol => "sobol",
