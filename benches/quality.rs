@@ -26,8 +26,8 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use wellspread::glam::Vec2;
-use wellspread::hash::pattern_seed;
 use wellspread::metrics;
+use wellspread::primitives::pattern_seed;
 use wellspread::{AnySampler, Sampler2D, SamplerKind};
 
 /// How big a run is.

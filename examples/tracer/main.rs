@@ -16,6 +16,7 @@
 //! it writes.
 
 mod analysis;
+mod cornell;
 mod output;
 mod reference;
 mod render;

@@ -3,8 +3,8 @@ use glam::Vec2;
 use crate::Error;
 use crate::pixel::PixelSampler;
 use crate::primitives::{hash_combine, hash_u32};
-use crate::samplers::digital::{OwenSeeds, bits_to_point, scrambled_bits};
-use crate::samplers::sobol::pascal_reversed;
+use crate::samplers::sequence::digital::{OwenSeeds, bits_to_point, scrambled_bits};
+use crate::samplers::sequence::sobol::pascal_reversed;
 
 /// The 24 permutations of `{0, 1, 2, 3}` in lexicographic order, each packed
 /// two bits per entry: entry `d` is `(PERMUTATIONS_4[p] >> 2 d) & 3`.
@@ -203,7 +203,7 @@ impl ZSobol {
             self.resolution[0],
             self.resolution[1]
         );
-        crate::sampler::debug_check_index(index, self.samples_per_pixel);
+        crate::traits::debug_check_index(index, self.samples_per_pixel);
         let index = index & (self.samples_per_pixel - 1);
         // `new` checked 2 log2(side) + m <= 32, so this fits in 32 bits
         // for pixels inside the film; outside, the high bits drop.

@@ -1,9 +1,9 @@
 use glam::Vec2;
 
-use crate::primitives::{InvariantDivisor, Permutation, derived_key, hash_u32, salt};
-use crate::sampler::{FillOn, Sampler2D};
-use crate::samplers::grid::{Grid, GridPattern, Jitter, fill_grid};
+use super::{CellOffset, Grid, GridPattern, Jitter, fill_grid};
+use crate::primitives::{InvariantDivisor, MAX_STRATA, Permutation, derived_key, hash_u32};
 use crate::simd::Isa;
+use crate::traits::{FillOn, Sampler2D};
 use crate::{Error, SamplerKind};
 
 /// Multi-jittered sampling with a guaranteed minimum distance: correlated
@@ -144,7 +144,7 @@ const TARGET: f64 = 0.6;
 /// [`TARGET`] to be taken in preference order.
 const MIN_JITTER: u32 = 4;
 
-/// Salts for the per-pattern choices, in the style of [`salt`]: odd, about
+/// Salts for the per-pattern choices, in the style of the crate's salts: odd, about
 /// half their bits set, distinct top five bits (the rotation
 /// [`derived_key`] applies).
 mod choice {
@@ -157,7 +157,7 @@ mod choice {
 
 impl BlueMultiJittered {
     /// The largest `n` accepted: 2^24, the number of distinct f32 strata.
-    pub const MAX_SAMPLES: u32 = crate::primitives::MAX_STRATA;
+    pub const MAX_SAMPLES: u32 = MAX_STRATA;
 
     /// A blue multi-jittered set of `n` points on the most square
     /// `columns x rows` grid.
@@ -207,16 +207,17 @@ impl BlueMultiJittered {
     /// The pattern with its per-pattern choices made.
     #[inline(always)]
     fn pattern(&self, pattern: u32) -> BlueMultiJitteredPattern<'_> {
-        let seed = hash_u32(pattern);
+        let pattern_hash = hash_u32(pattern);
         let grid = &self.grid;
         let (columns, rows) = (grid.columns(), grid.rows());
-        let pick =
-            |salt: u32, len: u32| ((derived_key(seed, salt) as u64 * len as u64) >> 32) as u32;
-        let flags = derived_key(seed, choice::FLAGS);
+        let pick = |salt: u32, len: u32| {
+            ((derived_key(pattern_hash, salt) as u64 * len as u64) >> 32) as u32
+        };
+        let flags = derived_key(pattern_hash, choice::FLAGS);
         BlueMultiJitteredPattern {
             grid,
             lattice: self.lattice,
-            order: Permutation::new(grid.len(), derived_key(seed, salt::ORDER)),
+            order: grid.cell_order(pattern_hash),
             offset_x: pick(choice::OFFSET_X, rows),
             offset_y: pick(choice::OFFSET_Y, columns),
             shift_x: pick(choice::SHIFT_X, columns),
@@ -225,7 +226,7 @@ impl BlueMultiJittered {
             mirror_x: flags >> 31 == 1,
             mirror_y: (flags >> 30) & 1 == 1,
             transpose: columns == rows && (flags >> 29) & 1 == 1,
-            jitter: Jitter::new(seed),
+            jitter: Jitter::new(pattern_hash),
             width: self.jitter,
         }
     }
@@ -377,7 +378,7 @@ impl Shape {
             return 1.0;
         }
         let n = (self.c * self.r) as f64;
-        (f64::from(width) / 16.0 + 8.0 * n / f64::from(crate::primitives::MAX_STRATA)).min(1.0)
+        (f64::from(width) / 16.0 + 8.0 * n / f64::from(MAX_STRATA)).min(1.0)
     }
 
     /// `T^2 2 n / sqrt(3)`: the squared target in fine cells.

@@ -1,11 +1,12 @@
 use glam::Vec2;
 
+use super::{fill_run, fill_set, set_size};
 use crate::Error;
 use crate::primitives::{
     hash_combine, hash_u32, owen_scramble_reversed, salt, stratum_to_unit_f32, u32_to_unit_f32,
 };
-use crate::sampler::Sampler2D;
-use crate::simd::Kernel;
+use crate::simd::{Isa, Kernel};
+use crate::traits::{FillOn, Sampler2D, Sequence2D};
 
 /// Base-3 digits scrambled per sample: `3^15 = 14_348_907` strata, the most
 /// that fit in the `2^24` f32 strata of `[0, 1)`.
@@ -31,8 +32,7 @@ const BASE3_STRATA: u32 = 14_348_907;
 ///
 /// # Properties
 ///
-/// - A sequence: `sample` accepts every `index` below `2^32`; `len()` is
-///   the set size for [`fill`](Sampler2D::fill) and the tools.
+/// - A [`Sequence2D`]: every `index` in `0..2^32` is valid.
 /// - Any run of `2^a 3^b` consecutive indices (not only a prefix;
 ///   `a <= 24`, `b <= 15`) has exactly one point in each cell of the
 ///   `2^a x 3^b` grid, checked exactly on the f32 values; in particular
@@ -46,14 +46,11 @@ const BASE3_STRATA: u32 = 14_348_907;
 /// One Owen-scramble hash for x; for y, fifteen rounds of a divide by 3 (a
 /// multiply) and one independent [`hash_u32`], then two more hashes for the
 /// low digits and a fixed-point stratum conversion: about three times
-/// [`Sobol`](crate::Sobol)'s operations. `fill` runs the same formula on 8 or 16 lanes at once (AVX2 or AVX-512,
-/// detected at run time), bit for bit equal to `sample`; measured ratios to a
-/// `rand_pcg::Pcg32` fill are in `docs/performance.md`.
+/// [`Sobol`](crate::Sobol)'s operations.
 ///
 /// # Limits
 ///
-/// Any `n` from 1 to `u32::MAX` for the set size. Base-3 strata are exact
-/// down to `3^-15`; finer digits are hashed jitter, so the index digits
+/// Base-3 strata are exact down to `3^-15`; finer digits are hashed jitter, so the index digits
 /// beyond the fifteenth (indices from `3^15 = 14_348_907` on) only select
 /// which jitter a point gets. Coordinates are multiples of `2^-24`.
 ///
@@ -93,13 +90,57 @@ pub struct Halton {
     n: u32,
 }
 
-sequence_sampler!(Halton, "scrambled Halton");
-
 impl Halton {
+    /// The sequence with set size `n` (see [`Sequence2D`]).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::ZeroSamples`] for `n = 0`.
+    pub fn new(n: u32) -> Result<Self, Error> {
+        set_size(n).map(|n| Self { n })
+    }
+
+    /// The sequence with no set size, `len() == u32::MAX` (see
+    /// [`Sequence2D`]).
+    #[must_use]
+    pub const fn unbounded() -> Self {
+        Self { n: u32::MAX }
+    }
+
     /// The points of pattern `pattern`, as a lane kernel.
     #[inline(always)]
     fn kernel(pattern: u32) -> impl Kernel {
         HaltonSeeds::new(pattern)
+    }
+}
+
+impl Sampler2D for Halton {
+    #[inline]
+    fn len(&self) -> u32 {
+        self.n
+    }
+
+    #[inline]
+    fn sample(&self, index: u32, pattern: u32) -> Vec2 {
+        Self::kernel(pattern).points([index])[0]
+    }
+
+    #[inline]
+    fn fill(&self, pattern: u32, out: &mut [Vec2]) {
+        self.fill_on(Isa::best(), pattern, out);
+    }
+}
+
+impl Sequence2D for Halton {
+    #[inline]
+    fn fill_from(&self, start: u32, pattern: u32, out: &mut [Vec2]) {
+        fill_run(&Self::kernel(pattern), start, out);
+    }
+}
+
+impl FillOn for Halton {
+    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
+        fill_set(isa, &Self::kernel(pattern), self.n, out);
     }
 }
 
@@ -112,10 +153,10 @@ struct HaltonSeeds {
 impl HaltonSeeds {
     #[inline]
     const fn new(pattern: u32) -> Self {
-        let seed = hash_u32(pattern);
+        let pattern_hash = hash_u32(pattern);
         Self {
-            x: hash_u32(seed ^ salt::JITTER_X),
-            y: hash_u32(seed ^ salt::JITTER_Y),
+            x: hash_u32(pattern_hash ^ salt::JITTER_X),
+            y: hash_u32(pattern_hash ^ salt::JITTER_Y),
         }
     }
 }

@@ -1,10 +1,11 @@
 use glam::Vec2;
 
+use super::digital::{DigitalSequence, OwenSeeds, scrambled_bits};
+use super::{fill_run, fill_set, set_size};
 use crate::Error;
 use crate::primitives::owen_scramble;
-use crate::sampler::Sampler2D;
-use crate::samplers::digital::{DigitalSequence, OwenSeeds, scrambled_bits, sequence_kernel};
-use crate::simd::Kernel;
+use crate::simd::{Isa, Kernel};
+use crate::traits::{FillOn, Sampler2D, Sequence2D};
 
 /// The first two dimensions of the Sobol sequence, Owen-scrambled with
 /// Burley's hash and shuffled: a randomised base-2 (0,2)-sequence.
@@ -33,9 +34,7 @@ use crate::simd::Kernel;
 ///
 /// # Properties
 ///
-/// - A sequence: `sample` accepts every `index` in `0..2^32`, whatever
-///   `len()` is. `len()` is only the set size that
-///   [`fill`](Sampler2D::fill) and the tools use.
+/// - A [`Sequence2D`]: every `index` in `0..2^32` is valid.
 /// - Every power-of-two prefix `0..2^m` (`m <= 24`), and every aligned block
 ///   `k 2^m..(k + 1) 2^m`, is a (0,m,2)-net: each of the `2^m` boxes
 ///   `2^-a x 2^-(m-a)` of every shape `a = 0..=m` holds exactly one point,
@@ -51,21 +50,15 @@ use crate::simd::Kernel;
 /// Four [`hash_u32`](crate::primitives::hash_u32) of the pattern (once per
 /// [`fill`](Sampler2D::fill)), then per sample three Owen-scramble hashes of
 /// four multiply-xor steps, four bit reversals and five xor-shift steps: no
-/// loop, no table, no division, about 160 x86-64 instructions for `sample`.
-/// `sobol_burley::sample`, called once per dimension, shuffles the index and
-/// hashes the seed per dimension and loops over the set bits of a 16-bit index
-/// through a direction-number table (so it accepts indices below 2^16 only).
-/// `fill` runs the same formula on 8 or 16 lanes at once (AVX2 or AVX-512,
-/// detected at run time), bit for bit equal to `sample`; measured ratios to a
-/// `rand_pcg::Pcg32` fill are in `docs/performance.md`.
+/// loop, no table, no division.
 ///
 /// # Limits
 ///
-/// Any `n` from 1 to `u32::MAX` for the set size. Coordinates are multiples
-/// of `2^-24`, so nets are exact for prefixes up to `2^24` points; beyond
-/// that the boxes are narrower than the f32 spacing below 1.0 and two points
-/// can share a coordinate. No index wraps: the `2^32` indices give `2^32`
-/// distinct points in 32-bit fixed point, before the truncation to 24 bits.
+/// Coordinates are multiples of `2^-24`, so nets are exact for prefixes up
+/// to `2^24` points; beyond that the boxes are narrower than the f32
+/// spacing below 1.0 and two points can share a coordinate. No index
+/// wraps: the `2^32` indices give `2^32` distinct points in 32-bit fixed
+/// point, before the truncation to 24 bits.
 ///
 /// # Examples
 ///
@@ -117,13 +110,51 @@ pub struct Sobol {
     n: u32,
 }
 
-sequence_sampler!(Sobol, "Owen-scrambled Sobol");
-
 impl Sobol {
-    /// The points of pattern `pattern`, as a lane kernel.
-    #[inline(always)]
-    fn kernel(pattern: u32) -> impl Kernel {
-        sequence_kernel::<Self>(OwenSeeds::new(pattern))
+    /// The sequence with set size `n` (see [`Sequence2D`]).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::ZeroSamples`] for `n = 0`.
+    pub fn new(n: u32) -> Result<Self, Error> {
+        set_size(n).map(|n| Self { n })
+    }
+
+    /// The sequence with no set size, `len() == u32::MAX` (see
+    /// [`Sequence2D`]).
+    #[must_use]
+    pub const fn unbounded() -> Self {
+        Self { n: u32::MAX }
+    }
+}
+
+impl Sampler2D for Sobol {
+    #[inline]
+    fn len(&self) -> u32 {
+        self.n
+    }
+
+    #[inline]
+    fn sample(&self, index: u32, pattern: u32) -> Vec2 {
+        Self::kernel(pattern).points([index])[0]
+    }
+
+    #[inline]
+    fn fill(&self, pattern: u32, out: &mut [Vec2]) {
+        self.fill_on(Isa::best(), pattern, out);
+    }
+}
+
+impl Sequence2D for Sobol {
+    #[inline]
+    fn fill_from(&self, start: u32, pattern: u32, out: &mut [Vec2]) {
+        fill_run(&Self::kernel(pattern), start, out);
+    }
+}
+
+impl FillOn for Sobol {
+    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
+        fill_set(isa, &Self::kernel(pattern), self.n, out);
     }
 }
 
@@ -163,7 +194,7 @@ impl DigitalSequence for Sobol {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::samplers::digital::tests::is_02_sequence;
+    use crate::samplers::sequence::digital::tests::is_02_sequence;
 
     #[test]
     fn sobol_is_a_02_sequence_up_to_2_to_the_32() {

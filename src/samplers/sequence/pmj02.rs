@@ -1,10 +1,11 @@
 use glam::Vec2;
 
+use super::digital::{DigitalSequence, OwenSeeds, scrambled_bits};
+use super::{fill_run, fill_set, set_size};
 use crate::Error;
 use crate::primitives::owen_scramble;
-use crate::sampler::Sampler2D;
-use crate::samplers::digital::{DigitalSequence, OwenSeeds, scrambled_bits, sequence_kernel};
-use crate::simd::Kernel;
+use crate::simd::{Isa, Kernel};
+use crate::traits::{FillOn, Sampler2D, Sequence2D};
 
 /// Progressive multi-jittered (0,2) sequence (pmj02, Christensen, Kensler &
 /// Kilpatrick 2018), generated in O(1) per sample with no tables.
@@ -41,8 +42,7 @@ use crate::simd::Kernel;
 ///
 /// # Properties
 ///
-/// - A sequence: `sample` accepts every `index` below `2^32`; `len()` is
-///   the set size for [`fill`](Sampler2D::fill) and the tools.
+/// - A [`Sequence2D`]: every `index` in `0..2^32` is valid.
 /// - Progressive: every power-of-two prefix `0..2^m` (`m <= 24`), and every
 ///   aligned block of `2^m`, is a (0,m,2)-net, checked exactly on the f32
 ///   values. Prefixes of length `4^k` are therefore stratified on
@@ -55,17 +55,15 @@ use crate::simd::Kernel;
 ///
 /// As [`Sobol`] (three Owen-scramble hashes, four bit reversals) with about
 /// twenty shift/mask/xor operations for the two generator matrices in place of
-/// Sobol's fifteen: no loop, no table, no division. `fill` runs the same formula on 8 or 16 lanes at once (AVX2 or AVX-512,
-/// detected at run time), bit for bit equal to `sample`; measured ratios to a
-/// `rand_pcg::Pcg32` fill are in `docs/performance.md`.
+/// Sobol's fifteen: no loop, no table, no division.
 ///
 /// # Limits
 ///
-/// Any `n` from 1 to `u32::MAX` for the set size. Coordinates are multiples
-/// of `2^-24`, so the net property is exact up to `2^24` points; beyond that
-/// boxes are narrower than the f32 spacing below 1.0. This is pmj02 without
-/// the blue-noise "best candidate" selection of pmj02bn, which needs a
-/// search over previous points and so cannot be random access.
+/// Coordinates are multiples of `2^-24`, so the net property is exact up to
+/// `2^24` points; beyond that boxes are narrower than the f32 spacing below
+/// 1.0. This is pmj02 without the blue-noise "best candidate" selection of
+/// pmj02bn, which needs a search over previous points and so cannot be
+/// random access.
 ///
 /// # Examples
 ///
@@ -99,13 +97,51 @@ pub struct Pmj02 {
     n: u32,
 }
 
-sequence_sampler!(Pmj02, "pmj02");
-
 impl Pmj02 {
-    /// The points of pattern `pattern`, as a lane kernel.
-    #[inline(always)]
-    fn kernel(pattern: u32) -> impl Kernel {
-        sequence_kernel::<Self>(OwenSeeds::new(pattern))
+    /// The sequence with set size `n` (see [`Sequence2D`]).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::ZeroSamples`] for `n = 0`.
+    pub fn new(n: u32) -> Result<Self, Error> {
+        set_size(n).map(|n| Self { n })
+    }
+
+    /// The sequence with no set size, `len() == u32::MAX` (see
+    /// [`Sequence2D`]).
+    #[must_use]
+    pub const fn unbounded() -> Self {
+        Self { n: u32::MAX }
+    }
+}
+
+impl Sampler2D for Pmj02 {
+    #[inline]
+    fn len(&self) -> u32 {
+        self.n
+    }
+
+    #[inline]
+    fn sample(&self, index: u32, pattern: u32) -> Vec2 {
+        Self::kernel(pattern).points([index])[0]
+    }
+
+    #[inline]
+    fn fill(&self, pattern: u32, out: &mut [Vec2]) {
+        self.fill_on(Isa::best(), pattern, out);
+    }
+}
+
+impl Sequence2D for Pmj02 {
+    #[inline]
+    fn fill_from(&self, start: u32, pattern: u32, out: &mut [Vec2]) {
+        fill_run(&Self::kernel(pattern), start, out);
+    }
+}
+
+impl FillOn for Pmj02 {
+    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
+        fill_set(isa, &Self::kernel(pattern), self.n, out);
     }
 }
 
@@ -192,7 +228,7 @@ mod tests {
 
     #[test]
     fn pmj02_is_a_02_sequence_up_to_2_to_the_32() {
-        assert!(crate::samplers::digital::tests::is_02_sequence(
+        assert!(crate::samplers::sequence::digital::tests::is_02_sequence(
             |j| stirling_x(1 << j),
             |j| stirling_y(1 << j),
         ));
