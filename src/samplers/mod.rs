@@ -2,15 +2,14 @@
 //! families with a shared core each: [`grid`] (stratified sets on a
 //! `columns x rows` grid) and [`sequence`] (progressive sequences). Two
 //! samplers stand alone ([`Hammersley`], [`Random`]), and [`kind`] names
-//! them all for choosing one at run time. The pixel sampler `ZSobol` is
-//! here until it moves beside `Padded`.
+//! them all for choosing one at run time. Pixel samplers live in
+//! `crate::pixel`.
 
 mod grid;
 mod hammersley;
 mod kind;
 mod random;
 pub(crate) mod sequence;
-mod zsobol;
 
 pub use grid::{
     BlueMultiJittered, CorrelatedMultiJittered, Jittered, LatinHypercube, MultiJittered, NRooks,
@@ -20,4 +19,3 @@ pub use hammersley::Hammersley;
 pub use kind::{AnySampler, SamplerKind};
 pub use random::Random;
 pub use sequence::{Halton, Pmj02, Sobol};
-pub use zsobol::ZSobol;

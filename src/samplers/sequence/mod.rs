@@ -12,8 +12,9 @@
 
 pub(crate) mod digital;
 mod halton;
-mod pmj02;
+pub(crate) mod pmj02;
 pub(crate) mod sobol;
+pub(crate) mod sobol_4d;
 
 pub use halton::Halton;
 pub use pmj02::Pmj02;
