@@ -61,6 +61,7 @@ fn visit_concrete(any: &AnySampler, v: &mut impl Visit) {
         AnySampler::NRooks(s) => v.visit(name, s),
         AnySampler::MultiJittered(s) => v.visit(name, s),
         AnySampler::CorrelatedMultiJittered(s) => v.visit(name, s),
+        AnySampler::BlueMultiJittered(s) => v.visit(name, s),
         AnySampler::Hammersley(s) => v.visit(name, s),
         AnySampler::Halton(s) => v.visit(name, s),
         AnySampler::Sobol(s) => v.visit(name, s),

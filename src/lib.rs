@@ -139,8 +139,8 @@ pub use pixel::{
 };
 pub use primitives::pattern_seed;
 pub use samplers::{
-    AnySampler, CorrelatedMultiJittered, Halton, Hammersley, Jittered, LatinHypercube,
-    MultiJittered, NRooks, Pmj02, Random, Regular, SamplerKind, Sobol,
+    AnySampler, BlueMultiJittered, CorrelatedMultiJittered, Halton, Hammersley, Jittered,
+    LatinHypercube, MultiJittered, NRooks, Pmj02, Random, Regular, SamplerKind, Sobol,
 };
 pub use traits::{Sampler2D, Sequence2D};
 

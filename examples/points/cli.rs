@@ -166,6 +166,7 @@ pub fn strata(sampler: &AnySampler) -> Strata {
         AnySampler::NRooks(_) => (None, true),
         AnySampler::MultiJittered(s) => (Some((s.columns(), s.rows())), true),
         AnySampler::CorrelatedMultiJittered(s) => (Some((s.columns(), s.rows())), true),
+        AnySampler::BlueMultiJittered(s) => (Some((s.columns(), s.rows())), true),
         _ => (None, false),
     };
     Strata { coarse, rooks }

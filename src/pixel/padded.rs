@@ -13,8 +13,8 @@ use crate::samplers::sequence::pmj02::{stirling_x, stirling_y};
 use crate::samplers::sequence::sobol::pascal_reversed;
 use crate::samplers::sequence::sobol_4d::dimensions_2_3_reversed;
 use crate::{
-    AnySampler, CorrelatedMultiJittered, Halton, Hammersley, Jittered, MultiJittered, NRooks,
-    Pmj02, Random, Regular, Sampler2D, Sobol,
+    AnySampler, BlueMultiJittered, CorrelatedMultiJittered, Halton, Hammersley, Jittered,
+    MultiJittered, NRooks, Pmj02, Random, Regular, Sampler2D, Sobol,
 };
 
 /// Any [`Sampler2D`] as a [`PixelSampler`]: pixel `[x, y]`, dimension pair
@@ -180,7 +180,7 @@ const fn mix64(mut z: u64) -> u32 {
 ///
 /// | family | `domain_1d` | `domain_2d` | `domain_3d` / `domain_4d` |
 /// | --- | --- | --- | --- |
-/// | grid ([`Regular`], [`Jittered`], [`NRooks`], [`MultiJittered`], [`CorrelatedMultiJittered`]) and [`Hammersley`] | the `n` samples in `n` distinct strata of `[0, 1)` (a keyed permutation of the index, jittered inside the stratum; centred for `Regular`) | `sample(index, stream)`: the sampler's own set | padded: a pair and a 1D draw, or two pairs, from unrelated streams |
+/// | grid ([`Regular`], [`Jittered`], [`NRooks`], [`MultiJittered`], [`CorrelatedMultiJittered`], [`BlueMultiJittered`]) and [`Hammersley`] | the `n` samples in `n` distinct strata of `[0, 1)` (a keyed permutation of the index, jittered inside the stratum; centred for `Regular`) | `sample(index, stream)`: the sampler's own set | padded: a pair and a 1D draw, or two pairs, from unrelated streams |
 /// | [`Sobol`], [`Pmj02`] | Owen-scrambled Sobol' dimension 0 of the shuffled index: a (0,m,1)-net on every power-of-two prefix | the sampler's own (0,2)-sequence, seeds taken from `stream` without further hashing | one Owen-scrambled 4D Sobol' set: (3,m,4)-nets on every power-of-two prefix (`m >= 3`), dimensions (0, 1) a (0,2)-sequence; 3D is its first three coordinates |
 /// | [`Halton`] | as Sobol's 1D | `sample(index, stream)` | padded |
 /// | [`Random`] | one independent uniform value (no stratification: the baseline) | independent uniform points (one hash per coordinate; not `sample`'s values) | padded |
@@ -453,6 +453,13 @@ impl DomainSampler for CorrelatedMultiJittered {
     }
 }
 
+impl DomainSampler for BlueMultiJittered {
+    #[inline]
+    fn domain_1d(&self, index: u32, stream: u32) -> f32 {
+        stratified_1d(index, self.len(), stream, true)
+    }
+}
+
 impl DomainSampler for Hammersley {
     #[inline]
     fn domain_1d(&self, index: u32, stream: u32) -> f32 {
@@ -470,6 +477,7 @@ impl DomainSampler for AnySampler {
             AnySampler::NRooks(s) => s.is_progressive(),
             AnySampler::MultiJittered(s) => s.is_progressive(),
             AnySampler::CorrelatedMultiJittered(s) => s.is_progressive(),
+            AnySampler::BlueMultiJittered(s) => s.is_progressive(),
             AnySampler::Hammersley(s) => s.is_progressive(),
             AnySampler::Halton(s) => s.is_progressive(),
             AnySampler::Sobol(s) => s.is_progressive(),
@@ -485,6 +493,7 @@ impl DomainSampler for AnySampler {
             AnySampler::NRooks(s) => s.domain_1d(index, stream),
             AnySampler::MultiJittered(s) => s.domain_1d(index, stream),
             AnySampler::CorrelatedMultiJittered(s) => s.domain_1d(index, stream),
+            AnySampler::BlueMultiJittered(s) => s.domain_1d(index, stream),
             AnySampler::Hammersley(s) => s.domain_1d(index, stream),
             AnySampler::Halton(s) => s.domain_1d(index, stream),
             AnySampler::Sobol(s) => s.domain_1d(index, stream),
@@ -500,6 +509,7 @@ impl DomainSampler for AnySampler {
             AnySampler::NRooks(s) => s.domain_2d(index, stream),
             AnySampler::MultiJittered(s) => s.domain_2d(index, stream),
             AnySampler::CorrelatedMultiJittered(s) => s.domain_2d(index, stream),
+            AnySampler::BlueMultiJittered(s) => s.domain_2d(index, stream),
             AnySampler::Hammersley(s) => s.domain_2d(index, stream),
             AnySampler::Halton(s) => s.domain_2d(index, stream),
             AnySampler::Sobol(s) => s.domain_2d(index, stream),
@@ -515,6 +525,7 @@ impl DomainSampler for AnySampler {
             AnySampler::NRooks(s) => s.domain_3d(index, stream),
             AnySampler::MultiJittered(s) => s.domain_3d(index, stream),
             AnySampler::CorrelatedMultiJittered(s) => s.domain_3d(index, stream),
+            AnySampler::BlueMultiJittered(s) => s.domain_3d(index, stream),
             AnySampler::Hammersley(s) => s.domain_3d(index, stream),
             AnySampler::Halton(s) => s.domain_3d(index, stream),
             AnySampler::Sobol(s) => s.domain_3d(index, stream),
@@ -530,6 +541,7 @@ impl DomainSampler for AnySampler {
             AnySampler::NRooks(s) => s.domain_4d(index, stream),
             AnySampler::MultiJittered(s) => s.domain_4d(index, stream),
             AnySampler::CorrelatedMultiJittered(s) => s.domain_4d(index, stream),
+            AnySampler::BlueMultiJittered(s) => s.domain_4d(index, stream),
             AnySampler::Hammersley(s) => s.domain_4d(index, stream),
             AnySampler::Halton(s) => s.domain_4d(index, stream),
             AnySampler::Sobol(s) => s.domain_4d(index, stream),

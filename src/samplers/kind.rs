@@ -8,8 +8,8 @@ use core::str::FromStr;
 use glam::Vec2;
 
 use super::{
-    CorrelatedMultiJittered, Halton, Hammersley, Jittered, MultiJittered, NRooks, Pmj02, Random,
-    Regular, Sobol,
+    BlueMultiJittered, CorrelatedMultiJittered, Halton, Hammersley, Jittered, MultiJittered,
+    NRooks, Pmj02, Random, Regular, Sobol,
 };
 use crate::simd::Isa;
 use crate::traits::{FillOn, Sequence2D};
@@ -130,6 +130,7 @@ sampler_kinds! {
     NRooks => "n-rooks",
     MultiJittered => "multi-jittered",
     CorrelatedMultiJittered => "correlated-multi-jittered",
+    BlueMultiJittered => "blue-multi-jittered",
     Hammersley => "hammersley",
     Halton => "halton",
     Sobol => "sobol",
@@ -159,6 +160,7 @@ impl AnySampler {
             | AnySampler::NRooks(_)
             | AnySampler::MultiJittered(_)
             | AnySampler::CorrelatedMultiJittered(_)
+            | AnySampler::BlueMultiJittered(_)
             | AnySampler::Hammersley(_) => None,
         }
     }

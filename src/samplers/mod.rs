@@ -11,7 +11,10 @@ mod kind;
 mod random;
 pub(crate) mod sequence;
 
-pub use grid::{CorrelatedMultiJittered, Jittered, LatinHypercube, MultiJittered, NRooks, Regular};
+pub use grid::{
+    BlueMultiJittered, CorrelatedMultiJittered, Jittered, LatinHypercube, MultiJittered, NRooks,
+    Regular,
+};
 pub use hammersley::Hammersley;
 pub use kind::{AnySampler, SamplerKind};
 pub use random::Random;

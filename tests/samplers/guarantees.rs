@@ -1,7 +1,8 @@
 //! What each sampler promises beyond the contract: one line per kind.
 
 use wellspread::{
-    AnySampler, CorrelatedMultiJittered, Hammersley, MultiJittered, NRooks, SamplerKind,
+    AnySampler, BlueMultiJittered, CorrelatedMultiJittered, Hammersley, MultiJittered, NRooks,
+    SamplerKind,
 };
 
 /// Where a point sits inside the finest stratum its sampler guarantees.
@@ -83,6 +84,8 @@ pub(crate) fn guarantees(kind: SamplerKind) -> Guarantees {
         SamplerKind::NRooks => Guarantees { latin_x: true, latin_y: true, max_n: NRooks::MAX_SAMPLES, offset: Some(Uniform), ..CONTRACT },
         SamplerKind::MultiJittered => Guarantees { latin_x: true, latin_y: true, strata: true, max_n: MultiJittered::MAX_SAMPLES, offset: Some(Uniform), ..CONTRACT },
         SamplerKind::CorrelatedMultiJittered => Guarantees { latin_x: true, latin_y: true, strata: true, max_n: CorrelatedMultiJittered::MAX_SAMPLES, offset: Some(Uniform), ..CONTRACT },
+        // Offsets: jitter in a centred window of the fine cell, narrower than it for some n.
+        SamplerKind::BlueMultiJittered => Guarantees { latin_x: true, latin_y: true, strata: true, max_n: BlueMultiJittered::MAX_SAMPLES, offset: None, ..CONTRACT },
         SamplerKind::Hammersley => Guarantees { latin_x: true, max_n: Hammersley::MAX_SAMPLES, net_at_powers_of_two: true, ..CONTRACT },
         SamplerKind::Halton => Guarantees { any_index: true, halton_runs: true, ..CONTRACT },
         SamplerKind::Sobol => SEQUENCE,
@@ -98,6 +101,7 @@ pub(crate) fn coarse_grid(sampler: &AnySampler) -> Option<(u32, u32)> {
         AnySampler::Jittered(s) => Some((s.columns(), s.rows())),
         AnySampler::MultiJittered(s) => Some((s.columns(), s.rows())),
         AnySampler::CorrelatedMultiJittered(s) => Some((s.columns(), s.rows())),
+        AnySampler::BlueMultiJittered(s) => Some((s.columns(), s.rows())),
         AnySampler::Random(_)
         | AnySampler::NRooks(_)
         | AnySampler::Hammersley(_)

@@ -1,5 +1,6 @@
 //! The grid family ([`Regular`], [`Jittered`], [`NRooks`],
-//! [`MultiJittered`], [`CorrelatedMultiJittered`]) and its core: the
+//! [`MultiJittered`], [`CorrelatedMultiJittered`], [`BlueMultiJittered`])
+//! and its core: the
 //! `columns x rows` shape, its input checks, the lengths with their
 //! reciprocals, the cell mapping, and the loop that runs a prepared pattern
 //! over a slice with the power-of-two case chosen once per call. Each
@@ -11,15 +12,18 @@
 //! [`NRooks`]: crate::NRooks
 //! [`MultiJittered`]: crate::MultiJittered
 //! [`CorrelatedMultiJittered`]: crate::CorrelatedMultiJittered
+//! [`BlueMultiJittered`]: crate::BlueMultiJittered
 
 use glam::Vec2;
 
+mod blue_multi_jittered;
 mod correlated_multi_jittered;
 mod jittered;
 mod multi_jittered;
 mod n_rooks;
 mod regular;
 
+pub use blue_multi_jittered::BlueMultiJittered;
 pub use correlated_multi_jittered::CorrelatedMultiJittered;
 pub use jittered::Jittered;
 pub use multi_jittered::MultiJittered;
