@@ -10,8 +10,11 @@
 //! - `samplers.txt`: every kind at the same cases ([`CASES`]: n = 1, a
 //!   square, a non-square and a prime; patterns 0, `u32::MAX` and one in
 //!   between), samples `0..min(n, 8)`;
-//! - `pixel_samplers.txt`: [`ZSobol`] at two sample counts, frames, pixels
-//!   and dimension pairs, samples `0..8`;
+//! - `pixel_samplers.txt`: the pixel samplers that are not `Padded`
+//!   ([`ZSobol`], `BlueNoise`) at two sample counts, frames, pixels and
+//!   dimension pairs, samples `0..8`;
+//! - `domains.txt`: every `PixelSamplerKind`'s draws through a `Domain`
+//!   (1D, 2D, 4D, a branch and a split) for samples `0..4`;
 //! - `primitives.txt`: hashes, permutations, unit conversions, pattern seeds.
 //!
 //! Each line holds the bits of a value (`f32::to_bits`, hex) and, for
@@ -37,7 +40,7 @@ use wellspread::glam::Vec2;
 use wellspread::primitives::{
     hash_combine, hash_u32, pattern_seed, permute, rand_u32, stratum_to_unit_f32, u32_to_unit_f32,
 };
-use wellspread::{PixelSampler, Sampler2D, SamplerKind, ZSobol};
+use wellspread::{PixelSampler, PixelSamplerKind, Sampler2D, SamplerKind, ZSobol};
 
 /// The (n, pattern) pairs every sampler is pinned at: n = 1 at both pattern
 /// extremes, a 4 x 4 square, a 4 x 6 non-square and the prime 97.
@@ -65,6 +68,7 @@ const PIXEL_CASES: [PixelCase; 2] = [
 const SAMPLERS: &str = include_str!("golden/samplers.txt");
 const PIXEL_SAMPLERS: &str = include_str!("golden/pixel_samplers.txt");
 const PRIMITIVES: &str = include_str!("golden/primitives.txt");
+const DOMAINS: &str = include_str!("golden/domains.txt");
 
 /// True when the tests should rewrite the files instead of comparing.
 fn blessing() -> bool {
@@ -117,16 +121,58 @@ fn samplers_text() -> String {
 fn pixel_samplers_text() -> String {
     let mut text = String::from(HEADER);
     text += "# sampler spp width height frame pixel-x pixel-y dimension index: x and y as f32 bits, then as decimals\n";
-    for (spp, [width, height], frame, [x, y], dimension) in PIXEL_CASES {
-        let zsobol = ZSobol::new(spp, [width, height], frame).unwrap();
-        for index in 0..PINNED {
-            let p = zsobol.sample_pixel([x, y], index, dimension);
-            writeln!(
-                text,
-                "zsobol {spp} {width} {height} {frame:08x} {x} {y} {dimension} {index} {}",
-                point_fields(p)
-            )
-            .unwrap();
+    for kind in [PixelSamplerKind::ZSobol, PixelSamplerKind::BlueNoise] {
+        for (spp, [width, height], frame, [x, y], dimension) in PIXEL_CASES {
+            let sampler = kind.build(spp, [width, height], frame).unwrap();
+            for index in 0..PINNED {
+                let p = sampler.sample_pixel([x, y], index, dimension);
+                writeln!(
+                    text,
+                    "{kind} {spp} {width} {height} {frame:08x} {x} {y} {dimension} {index} {}",
+                    point_fields(p)
+                )
+                .unwrap();
+            }
+        }
+    }
+    text
+}
+
+/// `domains.txt` as the implementation computes it now: for every pixel
+/// sampler kind and case, the draws of samples `0..4` through a `Domain`
+/// (`next_1d`, `next_2d`, `next_4d`, then `branch(7).next_2d()` and
+/// `split(3, 4, 1).next_2d()`), each value's bits in hex.
+fn domains_text() -> String {
+    let mut text = String::from(HEADER);
+    text += "# sampler spp width height frame pixel-x pixel-y index: next_1d | next_2d | next_4d | branch(7).next_2d | split(3, 4, 1).next_2d\n";
+    for kind in PixelSamplerKind::all() {
+        for (spp, [width, height], frame, [x, y], _) in PIXEL_CASES {
+            let sampler = kind.build(spp, [width, height], frame).unwrap();
+            for index in 0..4 {
+                let mut d = sampler.start([x, y], index);
+                let one = d.next_1d();
+                let two = d.next_2d();
+                let four = d.next_4d();
+                let branch = d.branch(7).next_2d();
+                let split = d.split(3, 4, 1).next_2d();
+                let hex = |values: &[f32]| {
+                    values
+                        .iter()
+                        .map(|v| format!("{:08x}", v.to_bits()))
+                        .collect::<Vec<_>>()
+                        .join(" ")
+                };
+                writeln!(
+                    text,
+                    "{kind} {spp} {width} {height} {frame:08x} {x} {y} {index}: {} | {} | {} | {} | {}",
+                    hex(&[one]),
+                    hex(&two.to_array()),
+                    hex(&four.to_array()),
+                    hex(&branch.to_array()),
+                    hex(&split.to_array()),
+                )
+                .unwrap();
+            }
         }
     }
     text
@@ -282,6 +328,16 @@ fn pixel_samplers_are_pinned() {
         return;
     }
     compare("pixel_samplers.txt", PIXEL_SAMPLERS, &computed);
+}
+
+#[test]
+fn domain_draws_are_pinned() {
+    let computed = domains_text();
+    if blessing() {
+        bless("domains.txt", &computed);
+        return;
+    }
+    compare("domains.txt", DOMAINS, &computed);
 }
 
 #[test]
