@@ -107,7 +107,6 @@ fn guarantees_line(kind: SamplerKind) -> Option<Guarantees> {
         SamplerKind::Halton => Guarantees { any_index: true, halton_runs: true, ..CONTRACT },
         SamplerKind::Sobol => SEQUENCE,
         SamplerKind::Pmj02 => Guarantees { square_prefixes: true, ..SEQUENCE },
-        _ => return None,
     };
     Some(g)
 }

@@ -54,8 +54,10 @@ macro_rules! sampler_kinds {
         /// assert_eq!(kind.name(), "multi-jittered");
         /// # Ok::<(), Box<dyn std::error::Error>>(())
         /// ```
+        ///
+        /// Not `#[non_exhaustive]`: code outside the crate that matches on a
+        /// kind lists every kind, so a new kind is a compile error there.
         #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-        #[non_exhaustive]
         pub enum SamplerKind {
             $(
                 #[doc = concat!("[`", stringify!($variant), "`], named `", $name, "`.")]
@@ -92,7 +94,6 @@ macro_rules! sampler_kinds {
         /// Any one of wellspread's samplers, chosen at run time, with static
         /// dispatch (a `match`, no allocation).
         #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-        #[non_exhaustive]
         pub enum AnySampler {
             $(
                 #[doc = concat!("A [`", stringify!($variant), "`].")]
