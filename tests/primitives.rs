@@ -1,10 +1,12 @@
-//! Measurements of `hash::permute`: that it is a bijection, and that the
-//! 2^32 patterns reach the permutations of short lengths often and evenly.
+//! Measurements of `primitives::permute`: that it is a bijection, and that
+//! the 2^32 patterns reach the permutations of short lengths often and
+//! evenly.
 //!
 //! Lengths 2 to 8 are exact shuffles, proven over all 2^32 patterns; longer
-//! lengths are measured. Kensler's 2013 hash failed every reach and
-//! uniformity test below (a length of 4 reached 8 of its 24 permutations,
-//! `NRooks` at n = 4 gave one rook arrangement for every pattern). Patterns
+//! lengths are measured. Kensler's 2013 hash fails every reach and
+//! uniformity test below (a length of 4 reaches 8 of its 24 permutations,
+//! and `NRooks` at n = 4 would give one rook arrangement for every
+//! pattern). Patterns
 //! are `hash_u32(k)` for consecutive `k`, so every test is deterministic;
 //! each statistical one states the chance that a truly uniform permutation
 //! family would fail it.
@@ -210,7 +212,7 @@ fn longer_lengths_are_uniform_and_distinct() {
 }
 
 /// The fine-grid cell of every point of one set, in index order (from
-/// `fill`, which `tests/samplers.rs` checks equals `sample`).
+/// `fill`, which `tests/samplers/` checks equals `sample`).
 fn cells<S: Sampler2D>(sampler: &S, n: u32, pattern: u32) -> Vec<(u32, u32)> {
     let mut points = vec![wellspread::glam::Vec2::ZERO; sampler.len() as usize];
     sampler.fill(pattern, &mut points);

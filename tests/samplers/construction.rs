@@ -1,0 +1,278 @@
+//! Constructors, names and errors: what a caller sees before the first sample.
+
+use wellspread::glam::Vec2;
+use wellspread::{
+    AnySampler, CorrelatedMultiJittered, Error, Halton, Hammersley, Jittered, MultiJittered,
+    NRooks, Pmj02, Random, Regular, Sampler2D, SamplerKind, Sobol,
+};
+
+use crate::checks::*;
+use crate::guarantees::guarantees;
+
+#[test]
+fn samplers_are_plain_values() {
+    fn plain<T: Copy + Send + Sync + std::fmt::Debug + PartialEq>() {}
+    plain::<Regular>();
+    plain::<Random>();
+    plain::<Jittered>();
+    plain::<NRooks>();
+    plain::<MultiJittered>();
+    plain::<CorrelatedMultiJittered>();
+    plain::<Hammersley>();
+    plain::<Halton>();
+    plain::<Sobol>();
+    plain::<Pmj02>();
+    plain::<AnySampler>();
+}
+
+#[test]
+fn kinds_round_trip_through_their_names() {
+    for &kind in SamplerKind::ALL {
+        assert_eq!(kind.name().parse::<SamplerKind>(), Ok(kind));
+        assert_eq!(kind.to_string(), kind.name());
+        assert_eq!(kind.build(9).unwrap().kind(), kind);
+    }
+    for bad in ["", "Jittered", "jitter", "n_rooks", "multi-jittered "] {
+        let Err(Error::UnknownSampler { name }) = bad.parse::<SamplerKind>() else {
+            panic!("{bad:?} parsed");
+        };
+        assert_eq!(name.as_str(), bad);
+        let message = Error::UnknownSampler { name }.to_string();
+        assert!(message.contains(&format!("\"{bad}\"")), "{message}");
+        for &kind in SamplerKind::ALL {
+            assert!(message.contains(kind.name()), "{message}");
+        }
+    }
+    // A long input is kept to its first bytes, cut at a character
+    // boundary, and the message says it was cut.
+    let long = "é".repeat(30);
+    let Err(Error::UnknownSampler { name }) = long.parse::<SamplerKind>() else {
+        panic!("parsed");
+    };
+    assert!(name.is_truncated() && long.starts_with(name.as_str()));
+    assert_eq!(name.as_str().len(), 40);
+    assert!(
+        Error::UnknownSampler { name }
+            .to_string()
+            .contains("é...\"")
+    );
+}
+
+#[test]
+fn any_sampler_is_eq_and_hash() {
+    let set: std::collections::HashSet<AnySampler> = SamplerKind::ALL
+        .iter()
+        .flat_map(|kind| {
+            [
+                kind.build(16).unwrap(),
+                kind.build(16).unwrap(),
+                kind.build(25).unwrap(),
+            ]
+        })
+        .collect();
+    assert_eq!(set.len(), 2 * SamplerKind::ALL.len());
+}
+
+#[cfg(feature = "serde")]
+#[test]
+fn kinds_serialize_as_their_names() {
+    for &kind in SamplerKind::ALL {
+        let json = serde_json::to_string(&kind).unwrap();
+        assert_eq!(json, format!("\"{}\"", kind.name()));
+        assert_eq!(serde_json::from_str::<SamplerKind>(&json).unwrap(), kind);
+    }
+    let error = serde_json::from_str::<SamplerKind>("\"sobel\"").unwrap_err();
+    assert!(
+        error.to_string().contains("unknown sampler \"sobel\""),
+        "{error}"
+    );
+    assert!(serde_json::from_str::<SamplerKind>("3").is_err());
+}
+
+// ---- Constructors and errors ----
+
+#[test]
+fn zero_samples_is_an_error() {
+    for &kind in SamplerKind::ALL {
+        assert_eq!(kind.build(0), Err(Error::ZeroSamples), "{kind}");
+    }
+    assert_eq!(Regular::new(0), Err(Error::ZeroSamples));
+    assert_eq!(Random::new(0), Err(Error::ZeroSamples));
+    assert_eq!(Jittered::new(0), Err(Error::ZeroSamples));
+    assert_eq!(NRooks::new(0), Err(Error::ZeroSamples));
+    assert_eq!(MultiJittered::new(0), Err(Error::ZeroSamples));
+    assert_eq!(CorrelatedMultiJittered::new(0), Err(Error::ZeroSamples));
+}
+
+#[test]
+fn above_the_largest_n_is_an_error() {
+    for &kind in SamplerKind::ALL {
+        let max = guarantees(kind).max_n;
+        let largest = kind.build(max);
+        assert!(largest.is_ok(), "{kind} rejects its own max {max}");
+        assert_eq!(largest.unwrap().len(), max, "{kind}");
+        if max < u32::MAX {
+            for n in [max + 1, u32::MAX] {
+                match kind.build(n) {
+                    Err(Error::TooManySamples {
+                        sampler,
+                        requested,
+                        max: m,
+                        ..
+                    }) => {
+                        assert_eq!(sampler, kind);
+                        assert_eq!(requested, n as u64);
+                        assert_eq!(m, max as u64);
+                    }
+                    other => panic!("{kind} n = {n}: {other:?}"),
+                }
+            }
+        }
+    }
+    for n in [(1 << 24) + 1, u32::MAX] {
+        assert!(matches!(NRooks::new(n), Err(Error::TooManySamples { .. })));
+        assert!(matches!(
+            MultiJittered::new(n),
+            Err(Error::TooManySamples { .. })
+        ));
+        assert!(matches!(
+            CorrelatedMultiJittered::new(n),
+            Err(Error::TooManySamples { .. })
+        ));
+    }
+}
+
+#[test]
+fn grids_with_a_side_above_2_pow_24_are_errors() {
+    // Primes above 2^24 (and twice one) have only 1 x n or 2 x n/2 grids.
+    for n in [16_777_259, 2 * 16_777_259, u32::MAX - 4] {
+        for result in [Regular::new(n).map(|_| ()), Jittered::new(n).map(|_| ())] {
+            assert!(
+                matches!(result, Err(Error::GridTooFine { columns, rows, .. }) if columns as u64 * rows as u64 == n as u64),
+                "n = {n}: {result:?}"
+            );
+        }
+        assert!(Random::new(n).is_ok());
+    }
+    // Composite n above 2^24 with a squarer grid are fine.
+    assert!(Regular::new((1 << 24) + 1).is_ok());
+    assert!(Jittered::new(1 << 30).is_ok());
+}
+
+#[test]
+fn with_grid_checks_both_sides() {
+    for (columns, rows) in [(0, 5), (5, 0), (0, 0)] {
+        assert_eq!(
+            Regular::with_grid(columns, rows),
+            Err(Error::ZeroGridSide { columns, rows })
+        );
+        assert_eq!(
+            Jittered::with_grid(columns, rows),
+            Err(Error::ZeroGridSide { columns, rows })
+        );
+    }
+    for (columns, rows) in [
+        (1 << 24 | 1, 1),
+        (1, 1 << 24 | 1),
+        (65_536, 65_536),
+        (1 << 24, 256),
+    ] {
+        // A side above 2^24 is too fine for f32; 2^32 cells too many for u32.
+        let expected = |result: Result<(), Error>| match result {
+            Err(Error::GridTooFine { .. }) => columns > 1 << 24 || rows > 1 << 24,
+            Err(Error::TooManySamples { .. }) => columns as u64 * rows as u64 > u32::MAX as u64,
+            _ => false,
+        };
+        assert!(expected(Regular::with_grid(columns, rows).map(|_| ())));
+        assert!(expected(Jittered::with_grid(columns, rows).map(|_| ())));
+    }
+    for (columns, rows) in [
+        (1, 1),
+        (3, 2),
+        (1 << 24, 1),
+        (1, 1 << 24),
+        (1 << 24, 255),
+        (65_535, 65_537),
+    ] {
+        let regular = Regular::with_grid(columns, rows).unwrap();
+        assert_eq!(
+            (regular.columns(), regular.rows(), regular.len()),
+            (columns, rows, columns * rows)
+        );
+        let jittered = Jittered::with_grid(columns, rows).unwrap();
+        assert_eq!((jittered.columns(), jittered.rows()), (columns, rows));
+    }
+    // A wide grid keeps its shape: columns > rows is allowed here.
+    let wide = Jittered::with_grid(7, 2).unwrap();
+    let mut cells = Occupancy::new(14);
+    for i in 0..14 {
+        let p = wide.sample(i, 3);
+        assert!(cells.insert(stratum(p.y, 2) * 7 + stratum(p.x, 7)));
+    }
+}
+
+#[test]
+fn error_messages_say_what_is_wrong() {
+    let zero = Error::ZeroSamples.to_string();
+    assert!(
+        zero.contains("at least one sample") && zero.contains("n = 0"),
+        "{zero}"
+    );
+    let side = Error::ZeroGridSide {
+        columns: 0,
+        rows: 5,
+    }
+    .to_string();
+    assert!(side.contains("0 x 5") && side.contains("column"), "{side}");
+    let too_many = NRooks::new(20_000_000).unwrap_err().to_string();
+    for part in ["n-rooks", "16777216", "20000000", "f32"] {
+        assert!(too_many.contains(part), "{too_many:?} lacks {part:?}");
+    }
+    let prime = Jittered::new(16_777_259).unwrap_err().to_string();
+    for part in ["jittered", "16777259", "2^24"] {
+        assert!(prime.contains(part), "{prime:?} lacks {part:?}");
+    }
+    let cells = Regular::with_grid(65_536, 65_536).unwrap_err().to_string();
+    for part in ["regular", "4294967296", "4294967295"] {
+        assert!(cells.contains(part), "{cells:?} lacks {part:?}");
+    }
+}
+
+#[test]
+#[should_panic(expected = "fill asked for 17 samples of a set of 16")]
+fn fill_past_the_end_panics() {
+    let mut out = [Vec2::ZERO; 17];
+    CorrelatedMultiJittered::new(16).unwrap().fill(0, &mut out);
+}
+
+#[test]
+fn every_sampler_panics_on_fill_past_the_end() {
+    for &kind in SamplerKind::ALL {
+        for n in [1, 16, 100] {
+            let sampler = kind.build(n).unwrap();
+            let result = std::panic::catch_unwind(|| {
+                let mut out = vec![Vec2::ZERO; n as usize + 1];
+                sampler.fill(5, &mut out);
+            });
+            assert!(result.is_err(), "{kind} n = {n}: fill wrote past the end");
+        }
+    }
+}
+
+/// Release builds only (debug builds assert): an index past the end still
+/// terminates with a point in the square.
+#[cfg(not(debug_assertions))]
+#[test]
+fn out_of_range_index_in_release_is_a_point() {
+    for &kind in SamplerKind::ALL {
+        for n in [1, 3, 5, 16, 100] {
+            let sampler = kind.build(n).unwrap();
+            for index in (n..4 * n).chain([u32::MAX]) {
+                for pattern in 0..64 {
+                    let p = sampler.sample(index, pattern);
+                    assert!(in_unit_square(p), "{kind} n = {n} index {index}: {p:?}");
+                }
+            }
+        }
+    }
+}
