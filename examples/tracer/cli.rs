@@ -39,10 +39,6 @@ With --seeds K, rmse and blurred_rmse are root-mean-square over the K seeds.
 
 Output paths are checked before rendering starts.";
 
-/// The default sample counts: powers of four, so every count is a square
-/// and each step should cut the error of a stratified pattern by at least 2.
-pub const DEFAULT_SPP: [u32; 5] = [1, 4, 16, 64, 256];
-
 /// The largest count accepted on the command line: a 4096 x 4096 grid,
 /// beyond which a single frame takes minutes anyway.
 const MAX_SPP: u32 = 1 << 24;
@@ -63,8 +59,8 @@ pub struct Cli {
     /// Comma-separated samplers, from those listed below [default: all]
     #[arg(long = "sampler", value_name = "LIST", value_delimiter = ',', value_parser = parse_sampler)]
     samplers: Vec<TracerSampler>,
-    /// Comma-separated samples per pixel, each in 1..=16777216
-    /// [default: 1,4,16,64,256]
+    /// Comma-separated samples per pixel for every scene, each in
+    /// 1..=16777216 [default: 1,4,16,64,256]
     #[arg(long = "spp", value_name = "LIST", value_delimiter = ',', value_parser = parse_spp)]
     spps: Vec<u32>,
     /// Film size for every scene, N or WxH, sides in 1..=16384 [default:
@@ -103,7 +99,8 @@ pub struct Cli {
 pub struct Options {
     pub scenes: Vec<SceneKind>,
     pub samplers: Vec<TracerSampler>,
-    pub spps: Vec<u32>,
+    /// The counts `--spp` asked for, ascending; `None`: each scene's own.
+    pub spps: Option<Vec<u32>>,
     pub size: Option<(u32, u32)>,
     pub filter: Filter,
     pub seed: u32,
@@ -146,9 +143,12 @@ impl Options {
                 u32::MAX - (cli.seeds - 1),
             )));
         }
-        let mut spps = or_all(cli.spps, DEFAULT_SPP.to_vec());
-        // Ascending, for the log-log interpolation between counts.
-        spps.sort_unstable();
+        let spps = (!cli.spps.is_empty()).then(|| {
+            let mut spps = dedup(cli.spps);
+            // Ascending, for the log-log interpolation between counts.
+            spps.sort_unstable();
+            spps
+        });
         Ok(Self {
             scenes: or_all(cli.scenes, SceneKind::ALL.to_vec()),
             samplers: or_all(cli.samplers, TracerSampler::all()),
@@ -162,6 +162,21 @@ impl Options {
             report: cli.report,
             docs: cli.docs,
         })
+    }
+
+    /// The sample counts `scene` renders at, ascending.
+    pub fn spps_for(&self, scene: SceneKind) -> Vec<u32> {
+        self.spps
+            .clone()
+            .unwrap_or_else(|| scene.default_spps().to_vec())
+    }
+
+    /// The film sizes `scene` renders at.
+    pub fn sizes_for(&self, scene: SceneKind) -> Vec<(u32, u32)> {
+        match self.size {
+            Some(size) => vec![size],
+            None => scene.default_sizes().to_vec(),
+        }
     }
 
     /// The frame seeds of every row, in order: `seed..=seed + seeds - 1`,
@@ -269,7 +284,11 @@ pub(crate) mod tests {
         assert_eq!(options.scenes, SceneKind::ALL);
         assert_eq!(options.samplers, TracerSampler::all());
         assert!(options.samplers.contains(&TracerSampler::ZSobol));
-        assert_eq!(options.spps, DEFAULT_SPP);
+        assert_eq!(options.spps, None);
+        for scene in SceneKind::ALL {
+            assert_eq!(options.spps_for(scene), scene.default_spps());
+            assert_eq!(options.sizes_for(scene), scene.default_sizes());
+        }
         assert_eq!(options.filter, Filter::Box);
         assert_eq!((options.seed, options.seeds), (0, 1));
         assert_eq!(options.frame_seeds(), 0..=0);
@@ -305,7 +324,7 @@ pub(crate) mod tests {
                 TracerSampler::ZSobol
             ]
         );
-        assert_eq!(options.spps, [4, 16]);
+        assert_eq!(options.spps_for(SceneKind::Moire), [4, 16]);
         assert_eq!(options.size, Some((32, 8)));
         assert_eq!(options.filter, Filter::Mitchell);
         assert_eq!((options.seed, options.seeds), (9, 4));

@@ -84,16 +84,11 @@ fn run(options: &Options, stdout: &mut dyn Write) -> Result<(), Failure> {
     for path in options.report.iter().chain(&options.docs) {
         claim_output(path)?;
     }
-    let sizes_of = |scene: SceneKind| match options.size {
-        Some(size) => vec![size],
-        None => scene.default_sizes().to_vec(),
-    };
     let frames: usize = options
         .scenes
         .iter()
-        .map(|&s| sizes_of(s).len())
+        .map(|&s| options.sizes_for(s).len() * options.spps_for(s).len())
         .sum::<usize>()
-        * options.spps.len()
         * options.samplers.len()
         * options.seeds as usize;
     let progress = Progress::new(frames as u64);
@@ -108,7 +103,7 @@ fn run(options: &Options, stdout: &mut dyn Write) -> Result<(), Failure> {
     ));
     let mut rows = Vec::new();
     for &scene_kind in &options.scenes {
-        for (width, height) in sizes_of(scene_kind) {
+        for (width, height) in options.sizes_for(scene_kind) {
             rows.extend(run_scene(options, &progress, scene_kind, width, height)?);
         }
     }
@@ -142,7 +137,7 @@ fn run_scene(
 ) -> Result<Vec<Row>, Failure> {
     let job = SceneJob::prepare(options, progress, kind, width, height)?;
     let mut rows = Vec::new();
-    for &spp in &options.spps {
+    for spp in options.spps_for(kind) {
         let mut frames = Vec::new();
         for &sampler in &options.samplers {
             if let Some(f) = job.measure(sampler, spp)? {

@@ -91,9 +91,10 @@ pub fn markdown_tables(options: &Options, rows: &[Row]) -> String {
             "\n### {scene} {width}x{height}, {} filter: RMSE / blurred RMSE (ms per frame), {seeds}; what reaching RMSE {} costs\n",
             options.filter, options.target
         );
+        let spps = options.spps_for(scene);
         let mut header = String::from("| sampler |");
         let mut rule = String::from("| --- |");
-        for spp in &options.spps {
+        for spp in &spps {
             let _ = write!(header, " {spp} spp |");
             rule.push_str(" ---: |");
         }
@@ -106,7 +107,7 @@ pub fn markdown_tables(options: &Options, rows: &[Row]) -> String {
                 .filter(|r| (r.scene, r.width, r.height, r.sampler) == (scene, width, height, kind))
                 .collect();
             let mut line = format!("| {kind} |");
-            for spp in &options.spps {
+            for spp in &spps {
                 match mine.iter().find(|r| r.spp == *spp) {
                     Some(r) => {
                         let _ = write!(

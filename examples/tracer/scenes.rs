@@ -46,6 +46,18 @@ impl SceneKind {
         }
     }
 
+    /// The sample counts the default run renders: powers of four, so every
+    /// count is a square and each step should cut the error of a
+    /// stratified pattern by at least 2.
+    pub fn default_spps(self) -> &'static [u32] {
+        match self {
+            SceneKind::Checker
+            | SceneKind::Moire
+            | SceneKind::MoireResolved
+            | SceneKind::Polygon => &[1, 4, 16, 64, 256],
+        }
+    }
+
     /// The film sizes (width, height) the default run renders. The default
     /// run (eleven samplers, 1 + 4 + 16 + 64 + 256 = 341 samples per pixel)
     /// shades about 12.6 M samples per sampler and scene at 192 x 192; the
