@@ -263,21 +263,22 @@ pub fn render<P: PixelSampler>(
     }
 }
 
-/// The sample positions of pixel `(px, py)` in film coordinates, one at a
-/// time: the library's O(1) random access means no per-pixel buffer.
+/// The samples of pixel `(px, py)`, one at a time: each one's film
+/// position (in pixels) and the radiance the scene sends there. The
+/// library's O(1) random access means no per-pixel buffer.
 #[inline]
-fn pixel_positions<P: PixelSampler>(
-    sampler: &P,
+fn pixel_samples<'a, P: PixelSampler>(
+    scene: &'a Scene,
+    sampler: &'a P,
     dimension: u32,
     px: u32,
     py: u32,
-) -> impl Iterator<Item = (f64, f64)> + '_ {
+) -> impl Iterator<Item = (f64, f64, Rgb)> + 'a {
     (0..sampler.samples_per_pixel()).map(move |index| {
         let offset = sampler.sample_pixel([px, py], index, dimension);
-        (
-            f64::from(px) + f64::from(offset.x),
-            f64::from(py) + f64::from(offset.y),
-        )
+        let x = f64::from(px) + f64::from(offset.x);
+        let y = f64::from(py) + f64::from(offset.y);
+        (x, y, scene.radiance(x, y))
     })
 }
 
@@ -311,8 +312,7 @@ pub fn box_pixel<P: PixelSampler>(
     py: u32,
 ) -> Rgb {
     let mut sum = [0.0f64; 3];
-    for (x, y) in pixel_positions(sampler, dimension, px, py) {
-        let radiance = scene.radiance(x, y);
+    for (_, _, radiance) in pixel_samples(scene, sampler, dimension, px, py) {
         for c in 0..3 {
             sum[c] += f64::from(radiance[c]);
         }
@@ -358,8 +358,9 @@ fn render_filtered<P: PixelSampler>(
             let last_row = (band_y0 + band_rows - 1 + margin).min(i64::from(height) - 1);
             for sy in first_row..=last_row {
                 for sx in 0..width {
-                    for (x, y) in pixel_positions(sampler, dimension, sx, sy as u32) {
-                        let radiance = scene.radiance(x, y).map(f64::from);
+                    for (x, y, radiance) in pixel_samples(scene, sampler, dimension, sx, sy as u32)
+                    {
+                        let radiance = radiance.map(f64::from);
                         // Pixels whose centre (p + 1/2) is within the radius.
                         let x_lo = ((x - 0.5 - radius).floor() as i64 + 1).max(0);
                         let x_hi = ((x - 0.5 + radius).ceil() as i64 - 1).min(i64::from(width) - 1);
