@@ -100,6 +100,12 @@ pub enum Error {
         /// The name given (its first [`InputText::CAPACITY`] bytes).
         name: InputText,
     },
+    /// A name that is not a pixel sampler's
+    /// ([`PixelSamplerKind::from_str`](core::str::FromStr)).
+    UnknownPixelSampler {
+        /// The name given (its first [`InputText::CAPACITY`] bytes).
+        name: InputText,
+    },
     /// [`ZSobol`](crate::ZSobol) was asked for a number of samples per
     /// pixel that is not a power of two.
     SamplesNotPowerOfTwo {
@@ -266,6 +272,13 @@ impl fmt::Display for Error {
                     write!(f, " {kind}")?;
                 }
                 Ok(())
+            }
+            Error::UnknownPixelSampler { name } => {
+                write!(f, "unknown pixel sampler \"{name}\"; expected one of:")?;
+                for kind in crate::PixelSamplerKind::all() {
+                    write!(f, " {kind}")?;
+                }
+                write!(f, " (any case; aliases: {})", crate::pixel::ALIASES_TEXT)
             }
             Error::SamplesNotPowerOfTwo { samples_per_pixel } => {
                 let above = u64::from(samples_per_pixel).next_power_of_two();

@@ -34,25 +34,27 @@
 //! (film position, lens, time, light, ...): that is [`PixelSampler`].
 //! [`Padded`] makes one of any [`Sampler2D`] (each pixel and dimension pair
 //! an independent pattern from [`pattern_seed`]), and [`ZSobol`] spreads
-//! the error across pixels as blue noise. A [`PixelCursor`] hands out the
-//! dimension pairs in order, like pbrt's `StartPixelSample` / `Get2D`:
+//! the error across pixels as blue noise. [`PixelSampler::start`] makes a
+//! [`Domain`], the owned state of one pixel sample that hands out draws of
+//! one to four dimensions and keyed child domains ([`PixelSampler`] shows a
+//! path tracer's loop); [`PixelSamplerKind`] picks a sampler by name:
 //!
 //! ```
 //! use wellspread::{Padded, PixelSampler, Sobol, ZSobol};
 //!
 //! /// Box-filtered render of a toy scene seen through a lens, lit by an
 //! /// area light: three dimension pairs per sample.
-//! fn render(sampler: &impl PixelSampler, width: u32, height: u32) -> Vec<f32> {
-//!     let spp = sampler.samples_per_pixel();
+//! fn render(sampler: &(impl PixelSampler + Copy), width: u32, height: u32) -> Vec<f32> {
+//!     let spp = sampler.samples_per_pixel().unwrap_or(16);
 //!     let mut image = Vec::with_capacity((width * height) as usize);
 //!     for py in 0..height {
 //!         for px in 0..width {
 //!             let mut sum = 0.0;
 //!             for index in 0..spp {
-//!                 let mut cursor = sampler.cursor([px, py], index);
-//!                 let film = cursor.next_2d(); // pair 0: offset in the pixel
-//!                 let lens = cursor.next_2d(); // pair 1: point on the lens
-//!                 let light = cursor.next_2d(); // pair 2: point on the light
+//!                 let mut d = sampler.start([px, py], index);
+//!                 let film = d.next_2d(); // offset in the pixel
+//!                 let lens = d.next_2d(); // point on the lens
+//!                 let light = d.next_2d(); // point on the light
 //!                 let (x, y) = (px as f32 + film.x, py as f32 + film.y);
 //!                 let blur = 0.5 * (lens.x - 0.5);
 //!                 sum += ((x + blur) * 0.3).sin().abs() * (y * 0.2).cos().abs() * (0.5 + light.y);
@@ -136,12 +138,15 @@ pub mod hash {
 }
 
 pub use error::{Error, InputText};
-pub use pixel::{Padded, PixelCursor, PixelSampler};
+pub use pixel::{
+    AnyPixelSampler, Domain, DomainSampler, Draw, Padded, PixelCursor, PixelSampler,
+    PixelSamplerKind, Root, ZSobol,
+};
 pub use primitives::pattern_seed;
 pub use sampler::Sampler2D;
 pub use samplers::{
     AnySampler, CorrelatedMultiJittered, Halton, Hammersley, Jittered, LatinHypercube,
-    MultiJittered, NRooks, Pmj02, Random, Regular, SamplerKind, Sobol, ZSobol,
+    MultiJittered, NRooks, Pmj02, Random, Regular, SamplerKind, Sobol,
 };
 
 // The README's usage example runs as a doctest.

@@ -5,6 +5,7 @@
 
 use criterion::criterion_main;
 
+mod domain_benches;
 mod kensler;
 mod metric_benches;
 mod ratio_benches;
@@ -13,5 +14,6 @@ mod sampler_benches;
 criterion_main!(
     sampler_benches::benches,
     metric_benches::benches,
-    ratio_benches::benches
+    ratio_benches::benches,
+    domain_benches::benches
 );

@@ -215,7 +215,7 @@ pub enum FrameSampler {
 
 impl PixelSampler for FrameSampler {
     #[inline]
-    fn samples_per_pixel(&self) -> u32 {
+    fn samples_per_pixel(&self) -> Option<u32> {
         match self {
             FrameSampler::Padded(s) => s.samples_per_pixel(),
             FrameSampler::ZSobol(s) => s.samples_per_pixel(),
@@ -229,6 +229,14 @@ impl PixelSampler for FrameSampler {
             FrameSampler::ZSobol(s) => s.sample_pixel(pixel, index, dimension),
         }
     }
+}
+
+/// Samples per pixel of a frame: the tracer builds every sampler with a
+/// count, so none is progressive.
+fn spp<P: PixelSampler>(sampler: &P) -> u32 {
+    sampler
+        .samples_per_pixel()
+        .expect("the tracer builds every sampler with a sample count")
 }
 
 /// The dimension pair images use for the film position. Monte Carlo
@@ -274,7 +282,7 @@ fn pixel_samples<'a, P: PixelSampler>(
     px: u32,
     py: u32,
 ) -> impl Iterator<Item = (f64, f64, Rgb)> + 'a {
-    (0..sampler.samples_per_pixel()).map(move |index| {
+    (0..spp(sampler)).map(move |index| {
         let offset = sampler.sample_pixel([px, py], index, dimension);
         let x = f64::from(px) + f64::from(offset.x);
         let y = f64::from(py) + f64::from(offset.y);
@@ -317,7 +325,7 @@ pub fn box_pixel<P: PixelSampler>(
             sum[c] += f64::from(radiance[c]);
         }
     }
-    let inverse_count = 1.0 / f64::from(sampler.samples_per_pixel());
+    let inverse_count = 1.0 / f64::from(spp(sampler));
     sum.map(|s| (s * inverse_count) as f32)
 }
 

@@ -2,22 +2,21 @@
 //! one by name at run time (tools, configuration files, command lines).
 
 #[macro_use]
-mod sequence;
+pub(crate) mod sequence;
 #[macro_use]
 mod grid;
 
 mod correlated_multi_jittered;
-mod digital;
+pub(crate) mod digital;
 mod halton;
 mod hammersley;
 mod jittered;
 mod multi_jittered;
 mod n_rooks;
-mod pmj02;
+pub(crate) mod pmj02;
 mod random;
 mod regular;
-mod sobol;
-mod zsobol;
+pub(crate) mod sobol;
 
 use core::fmt;
 use core::str::FromStr;
@@ -34,7 +33,6 @@ pub use pmj02::Pmj02;
 pub use random::Random;
 pub use regular::Regular;
 pub use sobol::Sobol;
-pub use zsobol::ZSobol;
 
 use crate::sampler::FillOn;
 use crate::simd::Isa;

@@ -127,7 +127,7 @@ impl Pmj02 {
 /// odd half (one bit up) rides along in the same steps. Sixteen coefficients
 /// of each half fit in 32 bits, so four steps do.
 #[inline(always)]
-const fn stirling_x(index: u32) -> u32 {
+pub(crate) const fn stirling_x(index: u32) -> u32 {
     let mut w = index;
     w ^= (w & 0xcccc_cccc) >> 1;
     w ^= (w & 0xf0f0_f0f0) >> 2;
@@ -142,7 +142,7 @@ const fn stirling_x(index: u32) -> u32 {
 /// down, plus the column of bit 31, which the shift drops: column 32 of
 /// `C0` is `x^16 (1 + x)^16 = x^16 + x^32`, one digit down bits 15 and 31.
 #[inline(always)]
-const fn stirling_y(index: u32) -> u32 {
+pub(crate) const fn stirling_y(index: u32) -> u32 {
     (stirling_x(index << 1) >> 1) ^ (0u32.wrapping_sub(index >> 31) & 0x8000_8000)
 }
 

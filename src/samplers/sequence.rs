@@ -103,3 +103,5 @@ macro_rules! sequence_sampler {
         }
     };
 }
+
+pub(crate) mod sobol_4d;

@@ -1,7 +1,8 @@
-use glam::Vec2;
+use glam::{Vec2, Vec3, Vec4};
 
+use super::padded::{seeds_2d, sobol_1d_at, sobol_2d_at, sobol_4d_at};
+use super::{Draw, PixelSampler, Root};
 use crate::Error;
-use crate::pixel::PixelSampler;
 use crate::primitives::{hash_combine, hash_u32};
 use crate::samplers::digital::{OwenSeeds, bits_to_point, scrambled_bits};
 use crate::samplers::sobol::pascal_reversed;
@@ -47,12 +48,12 @@ const INDEX_BITS: u32 = 32;
 /// 2. That index is read as base-4 digits (for odd `m` the lowest digit is
 ///    a single bit), and each digit is mapped by one of the 24 permutations
 ///    of `{0, 1, 2, 3}` (one bit flip or not for the single bit), chosen by
-///    a hash of the digits above it, the seed and `d`: a nested scramble
+///    a hash of the digits above it, the frame and `d`: a nested scramble
 ///    that visits the quads of every level in a random order, different for
 ///    every dimension pair.
 /// 3. The result indexes Sobol dimensions 0 and 1 (the same generator
 ///    matrices as [`Sobol`](crate::Sobol)), Owen-scrambled with seeds hashed
-///    from the seed and `d` ([`owen_scramble_reversed`](crate::primitives::owen_scramble_reversed)),
+///    from the frame and `d` ([`owen_scramble_reversed`](crate::primitives::owen_scramble_reversed)),
 ///    and truncated to 24 bits.
 ///
 /// Neighbouring pixels thus take neighbouring blocks of one (0,2)-sequence,
@@ -75,7 +76,7 @@ const INDEX_BITS: u32 = 32;
 ///   image); where the image changes completely inside a pixel there is
 ///   nothing to cancel and the error is as white as per-pixel patterns'.
 ///   One scramble serves the whole image, so whole-frame RMSE varies more
-///   from seed to seed than with per-pixel patterns: compare seeds by
+///   from frame to frame than with per-pixel patterns: compare frames by
 ///   their average. See `docs/zsobol.md` for measurements.
 ///
 /// # Cost
@@ -93,12 +94,28 @@ const INDEX_BITS: u32 = 32;
 /// 1920 x 1080 (side 2048) allows up to 1024 spp, 3840 x 2160 (side 4096)
 /// up to 256, 512 x 512 up to 16384. [`ZSobol::new`] returns
 /// [`Error::IndexSpaceTooLarge`] beyond that; render more spp as several
-/// passes with different seeds and average them. Nets are exact for
+/// passes with different frames and average them. Nets are exact for
 /// `spp <= 2^24`, the f32 resolution of `[0, 1)`.
 ///
-/// A pixel outside the resolution or an `index >= spp` is a debug-build
-/// panic; a release build uses the low bits of each (a point of some
-/// other pixel, still in `[0, 1)^2`).
+/// A pixel outside the resolution is mapped onto the film (`x mod width`,
+/// `y mod height`) with every scramble keyed by the tile it fell in, and
+/// an `index >= spp` is sample `index mod spp` of pass `index / spp`, with
+/// every scramble keyed by the pass: both get complete, unrelated sets,
+/// in debug and release builds alike ([`PixelSampler`]'s edge rules).
+///
+/// # Domains
+///
+/// Through a [`Domain`](crate::Domain) each draw uses the same Morton
+/// ordering and digit permutations as `sample_pixel`, keyed by the draw's
+/// stream instead of `(frame, dimension)`, so every draw keeps the
+/// properties above: 2D draws are Sobol' dimensions (0, 1) of the pixel's
+/// permuted block; 1D draws its dimension 0 (a (0,m,1)-net per pixel); 3D
+/// and 4D draws the 4D Sobol' set of [`DomainSampler`](crate::DomainSampler)'s
+/// table on that block ((3,m,4)-nets per pixel for `spp >= 8`, and the
+/// quads of the Morton hierarchy together finer nets). The pixel's Morton
+/// index is computed once, in `start`; the permutations are per draw. The
+/// scrambles do not depend on the pixel, so no pattern repeats across the
+/// film (no 256-pixel tile: tested).
 ///
 /// # Examples
 ///
@@ -129,12 +146,12 @@ pub struct ZSobol {
     /// Base-4 digits of the index, the single low bit of an odd `m`
     /// counted as one.
     base4_digits: u32,
-    seed: u32,
+    frame: u32,
 }
 
 impl ZSobol {
     /// A ZSobol sampler for a `resolution = [width, height]` film at
-    /// `samples_per_pixel` samples per pixel; `seed` (a frame number, say)
+    /// `samples_per_pixel` samples per pixel; `frame` (a frame number, say)
     /// picks one of 2^32 unrelated scrambles.
     ///
     /// # Errors
@@ -145,7 +162,7 @@ impl ZSobol {
     /// - [`Error::ZeroGridSide`] for a zero width or height.
     /// - [`Error::IndexSpaceTooLarge`] when `side^2 x spp` exceeds `2^32`
     ///   (see Limits above).
-    pub fn new(samples_per_pixel: u32, resolution: [u32; 2], seed: u32) -> Result<Self, Error> {
+    pub fn new(samples_per_pixel: u32, resolution: [u32; 2], frame: u32) -> Result<Self, Error> {
         if samples_per_pixel == 0 {
             return Err(Error::ZeroSamples);
         }
@@ -176,7 +193,7 @@ impl ZSobol {
             resolution,
             log2_spp,
             base4_digits: log2_side + log2_spp.div_ceil(2),
-            seed,
+            frame,
         })
     }
 
@@ -186,28 +203,41 @@ impl ZSobol {
         self.resolution
     }
 
-    /// The seed it was built with.
+    /// The frame it was built with.
     #[inline]
-    pub const fn seed(&self) -> u32 {
-        self.seed
+    pub const fn frame(&self) -> u32 {
+        self.frame
     }
 
-    /// The Sobol index of sample `index` of `pixel` in dimension pair
-    /// `dimension`, after the Morton ordering and the digit permutations
-    /// (`permutation_key` picks the dimension pair's permutations).
+    /// `pixel` on the film, and 0 if it was there or else a nonzero key of
+    /// the tile of the film's repetition it fell in.
     #[inline]
-    fn sequence_index(&self, [x, y]: [u32; 2], index: u32, permutation_key: u32) -> u32 {
-        debug_assert!(
-            x < self.resolution[0] && y < self.resolution[1],
-            "pixel ({x}, {y}) outside the {} x {} film",
-            self.resolution[0],
-            self.resolution[1]
-        );
-        crate::sampler::debug_check_index(index, self.samples_per_pixel);
-        let index = index & (self.samples_per_pixel - 1);
-        // `new` checked 2 log2(side) + m <= 32, so this fits in 32 bits
-        // for pixels inside the film; outside, the high bits drop.
-        let morton_index = ((morton(x, y) << self.log2_spp) | u64::from(index)) as u32;
+    fn on_film(&self, [x, y]: [u32; 2]) -> ([u32; 2], u32) {
+        let [width, height] = self.resolution;
+        if x < width && y < height {
+            ([x, y], 0)
+        } else {
+            (
+                [x % width, y % height],
+                hash_combine(x / width, y / height) | 1,
+            )
+        }
+    }
+
+    /// The pixel's Morton index shifted up by `m`: the first sequence index
+    /// of its block, before the permutations. `new` checked
+    /// `2 log2(side) + m <= 32`, so it fits for pixels on the film.
+    #[inline]
+    fn block_start(&self, [x, y]: [u32; 2]) -> u32 {
+        (morton(x, y) << self.log2_spp) as u32
+    }
+
+    /// The Sobol index of sample `index` (below spp) of the pixel whose
+    /// block starts at `block`, after the Morton ordering and the digit
+    /// permutations (`permutation_key` picks the dimension's permutations).
+    #[inline]
+    fn sequence_index(&self, block: u32, index: u32, permutation_key: u32) -> u32 {
+        let morton_index = block | (index & (self.samples_per_pixel - 1));
         let odd = self.log2_spp & 1;
         let mut permuted = 0u32;
         // Digit i covers bits `2 i - odd` and the one above; for odd m the
@@ -267,20 +297,67 @@ const fn pick(node: u32, key: u32, count: u32) -> usize {
 
 impl PixelSampler for ZSobol {
     #[inline]
-    fn samples_per_pixel(&self) -> u32 {
-        self.samples_per_pixel
+    fn samples_per_pixel(&self) -> Option<u32> {
+        Some(self.samples_per_pixel)
     }
 
     /// Sample `index` of `pixel` in dimension pair `dimension`; see the
-    /// type's docs for out-of-range arguments.
+    /// type's Limits for out-of-range arguments.
     #[inline]
     fn sample_pixel(&self, pixel: [u32; 2], index: u32, dimension: u32) -> Vec2 {
+        let (pixel, tile) = self.on_film(pixel);
+        let pass = index >> self.log2_spp;
         // `index` seeds the permutations, `x` and `y` the Owen scrambles:
-        // three independent hashes of (seed, dimension).
-        let seeds = OwenSeeds::new(hash_combine(self.seed, dimension));
-        let s = self.sequence_index(pixel, index, seeds.index);
+        // three independent hashes of (frame, dimension).
+        let mut pattern = hash_combine(self.frame, dimension);
+        if tile != 0 || pass != 0 {
+            pattern = hash_combine(pattern, tile ^ hash_u32(pass));
+        }
+        let seeds = OwenSeeds::new(pattern);
+        let s = self.sequence_index(self.block_start(pixel), index, seeds.index);
         // Dimension 0's generator is the identity: its reversed digits are `s`.
         bits_to_point(scrambled_bits(s, pascal_reversed(s), seeds))
+    }
+
+    /// The key from the frame (and the tile, off the film), the pixel
+    /// state the Morton block start.
+    #[inline]
+    fn root(&self, pixel: [u32; 2]) -> Root {
+        let (pixel, tile) = self.on_film(pixel);
+        let key = hash_u32(self.frame ^ 0x7a3c_9e15);
+        Root {
+            key: if tile == 0 {
+                key
+            } else {
+                hash_combine(key, tile)
+            },
+            pixel: self.block_start(pixel),
+        }
+    }
+
+    #[inline]
+    fn draw_1d(&self, draw: Draw) -> f32 {
+        let seeds = seeds_2d(draw.stream);
+        let s = self.sequence_index(draw.pixel_state, draw.index, seeds.index);
+        sobol_1d_at(s, seeds.x)
+    }
+
+    #[inline]
+    fn draw_2d(&self, draw: Draw) -> Vec2 {
+        let seeds = seeds_2d(draw.stream);
+        let s = self.sequence_index(draw.pixel_state, draw.index, seeds.index);
+        sobol_2d_at(s, seeds)
+    }
+
+    #[inline]
+    fn draw_3d(&self, draw: Draw) -> Vec3 {
+        self.draw_4d(draw).truncate()
+    }
+
+    #[inline]
+    fn draw_4d(&self, draw: Draw) -> Vec4 {
+        let s = self.sequence_index(draw.pixel_state, draw.index, draw.stream);
+        sobol_4d_at(s, draw.stream)
     }
 }
 
@@ -320,8 +397,9 @@ mod tests {
             let mut seen = std::collections::HashSet::new();
             for y in 0..8 {
                 for x in 0..8 {
-                    let block: std::vec::Vec<u32> =
-                        (0..spp).map(|i| z.sequence_index([x, y], i, 99)).collect();
+                    let block: std::vec::Vec<u32> = (0..spp)
+                        .map(|i| z.sequence_index(z.block_start([x, y]), i, 99))
+                        .collect();
                     let base = block[0] / spp;
                     assert!(block.iter().all(|&s| s / spp == base), "spp {spp}");
                     for s in block {
@@ -339,7 +417,7 @@ mod tests {
         let z = ZSobol::new(4, [16, 16], 0).unwrap();
         let blocks: std::vec::Vec<u32> = [[2, 6], [3, 6], [2, 7], [3, 7]]
             .iter()
-            .flat_map(|&p| (0..4).map(move |i| z.sequence_index(p, i, 5) / 16))
+            .flat_map(|&p| (0..4).map(move |i| z.sequence_index(z.block_start(p), i, 5) / 16))
             .collect();
         assert!(blocks.iter().all(|&b| b == blocks[0]));
     }
@@ -375,9 +453,9 @@ mod tests {
     #[test]
     fn the_largest_film_keeps_its_corner_pixels_apart() {
         let z = ZSobol::new(1, [65536, 65536], 1).unwrap();
-        let a = z.sequence_index([65535, 65535], 0, 7);
-        let b = z.sequence_index([65535, 65534], 0, 7);
-        let c = z.sequence_index([0, 0], 0, 7);
+        let a = z.sequence_index(z.block_start([65535, 65535]), 0, 7);
+        let b = z.sequence_index(z.block_start([65535, 65534]), 0, 7);
+        let c = z.sequence_index(z.block_start([0, 0]), 0, 7);
         assert!(a != b && a != c && b != c);
     }
 }
