@@ -126,6 +126,7 @@ pub mod primitives;
 mod sampler;
 mod samplers;
 mod simd;
+pub mod warp;
 
 /// The primitives under their first name: `wellspread::hash::pattern_seed`
 /// and the rest keep working. New code should use [`primitives`].

@@ -24,6 +24,7 @@
 
 mod analysis;
 mod cli;
+mod cornell;
 mod output;
 mod reference;
 mod render;
