@@ -9,7 +9,7 @@ use std::path::PathBuf;
 use clap::Parser;
 
 use crate::render::{Filter, TracerSampler};
-use crate::scenes::SceneKind;
+use crate::scenes::{Built, SceneKind};
 use crate::shared::{self, Failure};
 
 /// What the tracer writes and how it exits; shown under `--help`.
@@ -18,7 +18,8 @@ Output, under --out (default out/), per scene as <scene>-<W>x<H>-<filter>/:
   reference.png              the reference image every RMSE is measured
                              against: what infinitely many samples would give
                              under the same filter (exact or quadrature where
-                             the scene allows, else 4096 samples per pixel);
+                             the scene allows, else 4096 samples per pixel;
+                             cornell: 1024 Sobol' samples per pixel);
                              cached as out/reference-*.bin
   <sampler>-<spp>spp.png     each frame (the first seed's)
   contact-<spp>spp.png       the reference and every sampler, cropped to
@@ -35,7 +36,8 @@ The markdown tables go to stdout; --report writes the rows as JSON
 seeds, width, height) and --docs the tables as a markdown page headed by the
 command and machine (on a page that has them, only the text between the
 tracer's markers is replaced).
-With --seeds K, rmse and blurred_rmse are root-mean-square over the K seeds.
+With --seeds K (default 1, 4 for cornell, whose path-traced error is
+noisier), rmse and blurred_rmse are root-mean-square over the K seeds.
 
 Output paths are checked before rendering starts.";
 
@@ -47,24 +49,26 @@ const MAX_SIDE: u32 = 16_384;
 const MAX_SEEDS: u32 = 1024;
 
 /// Renders the aliasing scenes (checker, moire, moire-resolved, polygon)
-/// with every sampler at several sample counts, measures RMSE and blurred
+/// and a path-traced Cornell box (cornell) with every pixel sampler at
+/// several sample counts, measures RMSE and blurred
 /// RMSE against a cached reference, writes PNGs, contact sheets,
 /// error spectra and error-vs-time plots, and prints the trade table.
 #[derive(Debug, Parser)]
 pub struct Cli {
-    /// Comma-separated scenes: checker, moire, moire-resolved, polygon
-    /// [default: all]
+    /// Comma-separated scenes: checker, moire, moire-resolved, polygon,
+    /// cornell (box filter only) [default: all]
     #[arg(long = "scene", value_name = "LIST", value_delimiter = ',', value_parser = parse_scene)]
     scenes: Vec<SceneKind>,
     /// Comma-separated samplers, from those listed below [default: all]
     #[arg(long = "sampler", value_name = "LIST", value_delimiter = ',', value_parser = parse_sampler)]
     samplers: Vec<TracerSampler>,
     /// Comma-separated samples per pixel for every scene, each in
-    /// 1..=16777216 [default: 1,4,16,64,256]
+    /// 1..=16777216 [default: 1,4,16,64,256; 4,16 for cornell]
     #[arg(long = "spp", value_name = "LIST", value_delimiter = ',', value_parser = parse_spp)]
     spps: Vec<u32>,
     /// Film size for every scene, N or WxH, sides in 1..=16384 [default:
-    /// 192x192 for checker and the moires; 5x7 and 64x64 for polygon]
+    /// 192x192 for checker and the moires; 5x7 and 64x64 for polygon;
+    /// 128x128 for cornell]
     #[arg(long, value_name = "N|WxH", value_parser = parse_size)]
     size: Option<(u32, u32)>,
     /// Reconstruction filter: box, gaussian, mitchell
@@ -75,10 +79,10 @@ pub struct Cli {
     #[arg(long, value_name = "N", default_value = "0", value_parser = shared::whole_number)]
     seed: u32,
     /// Frames per row, with seeds seed..=seed+K-1 (which must not pass
-    /// 4294967295); errors are RMS over them
-    #[arg(long, value_name = "K", default_value_t = 1,
+    /// 4294967295); errors are RMS over them [default: 1; 4 for cornell]
+    #[arg(long, value_name = "K",
           value_parser = clap::value_parser!(u32).range(1..=i64::from(MAX_SEEDS)))]
-    seeds: u32,
+    seeds: Option<u32>,
     /// RMSE the "to reach" columns aim at (positive)
     #[arg(long, value_name = "RMSE", default_value_t = 0.01, value_parser = parse_target)]
     target: f64,
@@ -104,7 +108,8 @@ pub struct Options {
     pub size: Option<(u32, u32)>,
     pub filter: Filter,
     pub seed: u32,
-    pub seeds: u32,
+    /// The `--seeds` asked for; `None`: each scene's own.
+    pub seeds: Option<u32>,
     pub target: f64,
     pub out: PathBuf,
     pub report: Option<PathBuf>,
@@ -128,29 +133,52 @@ fn dedup<T: PartialEq>(items: Vec<T>) -> Vec<T> {
 
 impl Options {
     /// The run `cli` asks for. The one check clap cannot make alone: the
-    /// seeds `seed..=seed + seeds - 1` must all be u32s. They are rejected
-    /// rather than wrapped to 0, 1, ..., so that the range the run reports
-    /// is the range it renders.
+    /// seeds `seed..=seed + seeds - 1` must all be u32s, for every scene's
+    /// count. They are rejected rather than wrapped to 0, 1, ..., so that
+    /// the range the run reports is the range it renders.
     fn from_cli(cli: Cli) -> Result<Self, Failure> {
-        let last_seed = u64::from(cli.seed) + u64::from(cli.seeds) - 1;
-        if last_seed > u64::from(u32::MAX) {
+        // The path tracer has no wide filters: a run of every scene leaves
+        // it out, and asking for it is an error.
+        let path_traced = |scene: &SceneKind| matches!(scene.build(1, 1), Built::PathTraced);
+        if cli.filter != Filter::Box
+            && let Some(scene) = cli.scenes.iter().find(|s| path_traced(s))
+        {
             return Err(Failure::Input(format!(
-                "--seed {} with --seeds {} runs to seed {last_seed}, past the last one, {}; \
-                 use a --seed of at most {} or fewer --seeds",
-                cli.seed,
-                cli.seeds,
-                u32::MAX,
-                u32::MAX - (cli.seeds - 1),
+                "--scene {scene} renders with the box filter only, not --filter {}",
+                cli.filter
             )));
         }
+        let all_scenes: Vec<SceneKind> = SceneKind::ALL
+            .into_iter()
+            .filter(|scene| cli.filter == Filter::Box || !path_traced(scene))
+            .collect();
         let spps = (!cli.spps.is_empty()).then(|| {
             let mut spps = dedup(cli.spps);
             // Ascending, for the log-log interpolation between counts.
             spps.sort_unstable();
             spps
         });
+        let scenes = or_all(cli.scenes, all_scenes);
+        let seeds = cli.seeds.unwrap_or_else(|| {
+            let most = scenes.iter().map(|s| s.default_seeds()).max();
+            most.unwrap_or(1)
+        });
+        let last_seed = u64::from(cli.seed) + u64::from(seeds) - 1;
+        if last_seed > u64::from(u32::MAX) {
+            let what = match cli.seeds {
+                Some(k) => format!("--seeds {k}"),
+                None => format!("the default {seeds} seeds"),
+            };
+            return Err(Failure::Input(format!(
+                "--seed {} with {what} runs to seed {last_seed}, past the last one, {}; \
+                 use a --seed of at most {} or fewer --seeds",
+                cli.seed,
+                u32::MAX,
+                u32::MAX - (seeds - 1),
+            )));
+        }
         Ok(Self {
-            scenes: or_all(cli.scenes, SceneKind::ALL.to_vec()),
+            scenes,
             samplers: or_all(cli.samplers, TracerSampler::all()),
             spps,
             size: cli.size,
@@ -162,6 +190,16 @@ impl Options {
             report: cli.report,
             docs: cli.docs,
         })
+    }
+
+    /// The samplers `scene` renders with, in the order given
+    /// (`sobol-pairs` only where there is a lens).
+    pub fn samplers_for(&self, scene: SceneKind) -> Vec<TracerSampler> {
+        self.samplers
+            .iter()
+            .copied()
+            .filter(|sampler| sampler.renders(scene))
+            .collect()
     }
 
     /// The sample counts `scene` renders at, ascending.
@@ -179,10 +217,15 @@ impl Options {
         }
     }
 
-    /// The frame seeds of every row, in order: `seed..=seed + seeds - 1`,
-    /// which [`Options::from_cli`] checked to fit in a u32.
-    pub fn frame_seeds(&self) -> std::ops::RangeInclusive<u32> {
-        self.seed..=self.seed + (self.seeds - 1)
+    /// Frames per row for `scene`.
+    pub fn seeds_for(&self, scene: SceneKind) -> u32 {
+        self.seeds.unwrap_or_else(|| scene.default_seeds())
+    }
+
+    /// The frame seeds of `scene`'s rows, in order: `seed..=seed + seeds -
+    /// 1`, which [`Options::from_cli`] checked to fit in a u32.
+    pub fn frame_seeds(&self, scene: SceneKind) -> std::ops::RangeInclusive<u32> {
+        self.seed..=self.seed + (self.seeds_for(scene) - 1)
     }
 }
 
@@ -195,7 +238,9 @@ pub fn parse(
 ) -> Result<Option<Options>, Failure> {
     let names: Vec<&str> = TracerSampler::all().iter().map(|s| s.name()).collect();
     let after_help = format!(
-        "Samplers: {}\n\n{HELP}\n\n{}",
+        "Samplers: {}\n(the library's pixel samplers, any case or alias such as cmj; in cornell\n\
+         each draws film and lens as one 4D point, and sobol-pairs, cornell only, is\n\
+         sobol drawing them as two 2D pairs)\n\n{HELP}\n\n{}",
         names.join(" "),
         shared::EXIT_CODES
     );
@@ -249,6 +294,8 @@ fn parse_target(text: &str) -> Result<f64, String> {
 #[cfg(test)]
 pub(crate) mod tests {
     use super::*;
+    use crate::render::SOBOL;
+    use wellspread::{PixelSamplerKind, SamplerKind};
 
     fn args(list: &[&str]) -> Vec<OsString> {
         list.iter().map(OsString::from).collect()
@@ -283,15 +330,20 @@ pub(crate) mod tests {
         let options = run_options(&[]);
         assert_eq!(options.scenes, SceneKind::ALL);
         assert_eq!(options.samplers, TracerSampler::all());
-        assert!(options.samplers.contains(&TracerSampler::ZSobol));
+        assert!(
+            options
+                .samplers
+                .contains(&TracerSampler::Pixel(PixelSamplerKind::ZSobol))
+        );
         assert_eq!(options.spps, None);
         for scene in SceneKind::ALL {
             assert_eq!(options.spps_for(scene), scene.default_spps());
             assert_eq!(options.sizes_for(scene), scene.default_sizes());
         }
         assert_eq!(options.filter, Filter::Box);
-        assert_eq!((options.seed, options.seeds), (0, 1));
-        assert_eq!(options.frame_seeds(), 0..=0);
+        assert_eq!((options.seed, options.seeds), (0, None));
+        assert_eq!(options.frame_seeds(SceneKind::Moire), 0..=0);
+        assert_eq!(options.frame_seeds(SceneKind::Cornell), 0..=3);
         assert_eq!(options.out, PathBuf::from("out"));
     }
 
@@ -319,16 +371,16 @@ pub(crate) mod tests {
         assert_eq!(
             options.samplers,
             [
-                TracerSampler::Padded(wellspread::SamplerKind::Regular),
-                TracerSampler::Padded(wellspread::SamplerKind::NRooks),
-                TracerSampler::ZSobol
+                TracerSampler::Pixel(PixelSamplerKind::Padded(SamplerKind::Regular)),
+                TracerSampler::Pixel(PixelSamplerKind::Padded(SamplerKind::NRooks)),
+                TracerSampler::Pixel(PixelSamplerKind::ZSobol)
             ]
         );
         assert_eq!(options.spps_for(SceneKind::Moire), [4, 16]);
         assert_eq!(options.size, Some((32, 8)));
         assert_eq!(options.filter, Filter::Mitchell);
-        assert_eq!((options.seed, options.seeds), (9, 4));
-        assert_eq!(options.frame_seeds(), 9..=12);
+        assert_eq!((options.seed, options.seeds), (9, Some(4)));
+        assert_eq!(options.frame_seeds(SceneKind::Moire), 9..=12);
         assert_eq!(options.report, Some(PathBuf::from("r.json")));
         assert_eq!(options.docs, Some(PathBuf::from("d.md")));
         assert_eq!(run_options(&["--size", "100"]).size, Some((100, 100)));
@@ -359,12 +411,27 @@ pub(crate) mod tests {
             let message = usage_error(bad);
             assert!(message.contains(named), "{bad:?}: {message}");
         }
-        let message = usage_error(&["--sampler", "regular, jittered"]);
-        assert!(
-            message.contains("unknown sampler \" jittered\""),
-            "{message}"
+        let message = usage_error(&["--sampler", "regular,jitterd"]);
+        assert!(message.contains("unknown sampler \"jitterd\""), "{message}");
+        assert!(message.contains("zsobol sobol-pairs"), "{message}");
+    }
+
+    #[test]
+    fn cornell_is_box_filtered_only() {
+        let message = usage_error(&["--scene", "moire,cornell", "--filter", "gaussian"]);
+        assert!(message.contains("--scene cornell"), "{message}");
+        // A run of every scene under a wide filter leaves cornell out.
+        let options = run_options(&["--filter", "mitchell"]);
+        assert!(!options.scenes.contains(&SceneKind::Cornell));
+        assert_eq!(options.scenes.len(), SceneKind::ALL.len() - 1);
+        assert!(run_options(&[]).scenes.contains(&SceneKind::Cornell));
+        // sobol-pairs renders cornell only.
+        let options = run_options(&["--sampler", "sobol,sobol-pairs"]);
+        assert_eq!(options.samplers_for(SceneKind::Moire), [SOBOL]);
+        assert_eq!(
+            options.samplers_for(SceneKind::Cornell),
+            [SOBOL, TracerSampler::SobolPairs]
         );
-        assert!(message.contains("zsobol"), "{message}");
     }
 
     #[test]
@@ -387,11 +454,16 @@ pub(crate) mod tests {
         assert!(message.contains("at most 4294967293"), "{message}");
         // The last seeds that fit are accepted, and reported as used.
         let options = run_options(&["--seed", "4294967293", "--seeds", "3"]);
-        assert_eq!(options.frame_seeds(), 4294967293..=u32::MAX);
         assert_eq!(
-            run_options(&["--seed", "4294967295"]).frame_seeds(),
-            u32::MAX..=u32::MAX
+            options.frame_seeds(SceneKind::Checker),
+            4294967293..=u32::MAX
         );
+        // cornell's default 4 seeds count too, unless it is left out.
+        let message = usage_error(&["--seed", "4294967295"]);
+        assert!(message.contains("the default 4 seeds"), "{message}");
+        assert!(message.contains("at most 4294967292"), "{message}");
+        let options = run_options(&["--seed", "4294967295", "--scene", "moire"]);
+        assert_eq!(options.frame_seeds(SceneKind::Moire), u32::MAX..=u32::MAX);
     }
 
     #[test]

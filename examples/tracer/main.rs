@@ -11,13 +11,16 @@
 //! For each scene, size, sampler and sample count it renders a frame (or
 //! one per seed with `--seeds K`), times it, and measures its RMSE and its
 //! blurred RMSE against a reference image. Every sampler goes through the
-//! library's [`PixelSampler`](wellspread::PixelSampler): the library's
-//! samplers padded across pixels, and `zsobol`. `--help` lists the files it
-//! writes.
+//! library's [`PixelSampler`](wellspread::PixelSampler), by the names of
+//! [`PixelSamplerKind`](wellspread::PixelSamplerKind): the library's
+//! samplers padded across pixels, and `zsobol`. The path-traced `cornell`
+//! draws every number through a [`Domain`](wellspread::Domain).
+//! `--help` lists the files it writes.
 //!
 //! The modules: `cli` (options and their checks), `render` (samplers,
 //! filters, the render loop), `scenes` and `reference` (what is rendered and
-//! its reference image), `analysis` (blurred RMSE, error spectra), `output`
+//! its reference image), `cornell` and `path` (the path-traced scene and the
+//! domains that feed it), `analysis` (blurred RMSE, error spectra), `output`
 //! (PNG, contact sheets, SVG plots) and `report` (tables, JSON, the
 //! `--docs` page). This file runs them: per scene and size, per count, per
 //! sampler, per seed.
@@ -26,6 +29,7 @@ mod analysis;
 mod cli;
 mod cornell;
 mod output;
+mod path;
 mod reference;
 mod render;
 mod report;
@@ -49,7 +53,7 @@ use crate::output::{
 };
 use crate::render::{FILM_DIMENSION, Image, TracerSampler, render};
 use crate::report::{Row, docs_page_from, json_report, low_frequency_power, markdown_tables};
-use crate::scenes::{Scene, SceneKind};
+use crate::scenes::{Built, SceneKind};
 use crate::shared::Failure;
 
 /// Bins of the radially averaged error spectrum.
@@ -88,18 +92,18 @@ fn run(options: &Options, stdout: &mut dyn Write) -> Result<(), Failure> {
     let frames: usize = options
         .scenes
         .iter()
-        .map(|&s| options.sizes_for(s).len() * options.spps_for(s).len())
-        .sum::<usize>()
-        * options.samplers.len()
-        * options.seeds as usize;
+        .map(|&s| {
+            options.sizes_for(s).len()
+                * options.spps_for(s).len()
+                * options.samplers_for(s).len()
+                * options.seeds_for(s) as usize
+        })
+        .sum::<usize>();
     let progress = Progress::new(frames as u64);
     let threads = rayon::current_num_threads();
-    let seeds = options.frame_seeds();
     progress.note(&format!(
-        "{threads} threads, filter {}, seeds {}..={}, writing to {}",
+        "{threads} threads, filter {}, writing to {}",
         options.filter,
-        seeds.start(),
-        seeds.end(),
         out.display()
     ));
     let mut rows = Vec::new();
@@ -140,7 +144,7 @@ fn run_scene(
     let mut rows = Vec::new();
     for spp in options.spps_for(kind) {
         let mut frames = Vec::new();
-        for &sampler in &options.samplers {
+        for sampler in options.samplers_for(kind) {
             if let Some(f) = job.measure(sampler, spp)? {
                 rows.push(f.row.clone());
                 frames.push(f);
@@ -169,7 +173,7 @@ struct SceneJob<'a> {
     /// `<scene>-<W>x<H>-<filter>`, the directory's name.
     label: String,
     dir: PathBuf,
-    scene: Scene,
+    scene: Built,
     reference: Image,
     /// Pixels per film pixel in the full-frame PNGs.
     zoom: u32,
@@ -204,10 +208,13 @@ impl<'a> SceneJob<'a> {
         let (reference, computed) =
             reference::load_or_compute(&options.out, kind, &scene, width, height, options.filter)
                 .map_err(|e| Failure::Io(format!("reference for {label}: {e}")))?;
+        let seeds = options.frame_seeds(kind);
         progress.note(&format!(
-            "{label}: reference {} in {:.2} s",
+            "{label}: reference {} in {:.2} s; seeds {}..={}",
             if computed { "computed" } else { "loaded" },
-            t.elapsed().as_secs_f64()
+            t.elapsed().as_secs_f64(),
+            seeds.start(),
+            seeds.end()
         ));
         let zoom = viewing_zoom(width, height);
         let path = dir.join("reference.png");
@@ -238,28 +245,32 @@ impl<'a> SceneJob<'a> {
         let mut squares = (0.0, 0.0);
         let mut spectrum = vec![0.0; SPECTRUM_BINS];
         let mut first: Option<(Image, f64, f64)> = None;
-        for (offset, seed) in options.frame_seeds().enumerate() {
+        let seeds = options.seeds_for(self.kind);
+        for (offset, seed) in options.frame_seeds(self.kind).enumerate() {
             let frame_sampler = match sampler.build(spp, width, height, seed) {
                 Ok(frame_sampler) => frame_sampler,
                 Err(e) => {
                     let label = &self.label;
                     self.progress
                         .note(&format!("{label}: skipping {sampler} at {spp} spp: {e}"));
-                    for _ in 0..options.seeds {
+                    for _ in 0..seeds {
                         self.progress.frame_done();
                     }
                     return Ok(None);
                 }
             };
-            let draw = || {
-                render(
-                    &self.scene,
+            let draw = || match &self.scene {
+                Built::Film(scene) => render(
+                    scene,
                     width,
                     height,
                     &frame_sampler,
                     FILM_DIMENSION,
                     options.filter,
-                )
+                ),
+                Built::PathTraced => {
+                    path::render(width, height, spp, frame_sampler, sampler.film_lens())
+                }
             };
             // Only the first seed is timed; the others only add to the errors.
             let (image, seconds) = if offset == 0 {
@@ -273,7 +284,7 @@ impl<'a> SceneJob<'a> {
             squares.1 += blurred * blurred;
             let frame_spectrum = error_spectrum(&image, &self.reference, SPECTRUM_BINS);
             for (sum, p) in spectrum.iter_mut().zip(frame_spectrum) {
-                *sum += p / f64::from(options.seeds);
+                *sum += p / f64::from(seeds);
             }
             if offset == 0 {
                 first = Some((image, rmse, seconds));
@@ -287,7 +298,7 @@ impl<'a> SceneJob<'a> {
         Picture::from_image(&image, self.zoom)
             .write_png(&path)
             .map_err(|e| write_error(&path, e))?;
-        let count = f64::from(options.seeds);
+        let count = f64::from(seeds);
         let row = Row {
             scene: self.kind,
             width,
@@ -298,7 +309,7 @@ impl<'a> SceneJob<'a> {
             blurred_rmse: (squares.1 / count).sqrt(),
             low_power: low_frequency_power(&spectrum),
             seconds,
-            seeds: options.seeds,
+            seeds,
         };
         Ok(Some(Frames {
             row,
@@ -355,7 +366,7 @@ impl<'a> SceneJob<'a> {
             .iter()
             .map(|f| (f.row.sampler.name(), f.spectrum.clone()))
             .collect();
-        let seeds = self.options.seeds;
+        let seeds = self.options.seeds_for(self.kind);
         let title = format!(
             "{}: error spectrum at {spp} spp, {seeds} seed{}",
             self.label,
@@ -369,9 +380,9 @@ impl<'a> SceneJob<'a> {
     fn write_trade_plot(&self, rows: &[Row]) -> Result<(), Failure> {
         let series: Vec<Series<'_>> = self
             .options
-            .samplers
-            .iter()
-            .map(|&sampler| Series {
+            .samplers_for(self.kind)
+            .into_iter()
+            .map(|sampler| Series {
                 name: sampler.name(),
                 points: rows
                     .iter()
@@ -418,6 +429,9 @@ fn crop_for(scene: SceneKind, width: u32, height: u32) -> Crop {
         // The middle of the resolved bands, where zsobol's error is blue.
         SceneKind::MoireResolved => (0.3, 0.3, 0.375, 0.375),
         SceneKind::Polygon => (0.0, 0.0, 1.0, 1.0),
+        // The glass sphere and the wall behind it, out of focus: caustic,
+        // refraction and the lens blur in one square.
+        SceneKind::Cornell => (0.5, 0.45, 0.5, 0.5),
     };
     let fraction = |f: f64, n: u32| ((f * f64::from(n)) as u32).min(n - 1);
     let (x, y) = (fraction(fx, width), fraction(fy, height));

@@ -4,10 +4,10 @@
 use std::fmt::Write as _;
 use std::fs;
 
-use wellspread::SamplerKind;
+use wellspread::{PixelSamplerKind, SamplerKind};
 
 use crate::cli::Options;
-use crate::render::TracerSampler;
+use crate::render::{SOBOL, TracerSampler};
 use crate::scenes::SceneKind;
 
 /// One measured row: a scene, size, sampler and count, over `seeds` frames.
@@ -80,12 +80,11 @@ pub fn format_ms(seconds: f64) -> String {
 /// the claims this run has the evidence for.
 pub fn markdown_tables(options: &Options, rows: &[Row]) -> String {
     let mut text = String::new();
-    let seeds = if options.seeds == 1 {
-        "one seed".to_owned()
-    } else {
-        format!("RMS over {} seeds", options.seeds)
-    };
     for (scene, width, height) in jobs(rows) {
+        let seeds = match options.seeds_for(scene) {
+            1 => "one seed".to_owned(),
+            k => format!("RMS over {k} seeds"),
+        };
         let _ = writeln!(
             text,
             "\n### {scene} {width}x{height}, {} filter: RMSE / blurred RMSE (ms per frame), {seeds}; what reaching RMSE {} costs\n",
@@ -101,7 +100,7 @@ pub fn markdown_tables(options: &Options, rows: &[Row]) -> String {
         header.push_str(" spp to reach | time to reach |");
         rule.push_str(" ---: | ---: |");
         let _ = writeln!(text, "{header}\n{rule}");
-        for &kind in &options.samplers {
+        for kind in options.samplers_for(scene) {
             let mine: Vec<&Row> = rows
                 .iter()
                 .filter(|r| (r.scene, r.width, r.height, r.sampler) == (scene, width, height, kind))
@@ -137,6 +136,9 @@ pub fn markdown_tables(options: &Options, rows: &[Row]) -> String {
     if let Some(table) = zsobol_versus_sobol(rows) {
         let _ = writeln!(text, "\n{table}");
     }
+    if let Some(table) = joint_versus_pairs(rows) {
+        let _ = writeln!(text, "\n{table}");
+    }
     text
 }
 
@@ -164,7 +166,7 @@ fn partner<'a>(rows: &'a [Row], r: &Row, sampler: TracerSampler) -> Option<&'a R
 /// has no such comparison (random, or every other sampler, not rendered at
 /// 16 spp or more).
 fn versus_random(rows: &[Row]) -> Option<String> {
-    let random = TracerSampler::Padded(SamplerKind::Random);
+    let random = TracerSampler::Pixel(PixelSamplerKind::Padded(SamplerKind::Random));
     let compared: Vec<(&Row, &Row)> = rows
         .iter()
         .filter(|r| r.spp >= 16 && r.sampler != random)
@@ -207,11 +209,10 @@ pub fn low_frequency_power(spectrum: &[f64]) -> f64 {
 /// zsobol against sobol, row by row: the ratio of blurred RMSE, of RMSE,
 /// and of low-frequency error power. `None` unless both were rendered.
 fn zsobol_versus_sobol(rows: &[Row]) -> Option<String> {
-    let sobol = TracerSampler::Padded(SamplerKind::Sobol);
     let pairs: Vec<(&Row, &Row)> = rows
         .iter()
-        .filter(|r| r.sampler == TracerSampler::ZSobol)
-        .filter_map(|r| Some((r, partner(rows, r, sobol)?)))
+        .filter(|r| r.sampler == TracerSampler::Pixel(PixelSamplerKind::ZSobol))
+        .filter_map(|r| Some((r, partner(rows, r, SOBOL)?)))
         .collect();
     if pairs.is_empty() {
         return None;
@@ -241,6 +242,38 @@ fn zsobol_versus_sobol(rows: &[Row]) -> Option<String> {
         );
     }
     text += "\n\"-\": the film is too small for an error spectrum.\n";
+    Some(text)
+}
+
+/// Film and lens as one 4D Sobol' draw (`sobol`) against two pairs
+/// (`sobol-pairs`), row by row: the ratio of RMSE, blurred RMSE and time,
+/// below 1 where the 4D draw is better. `None` unless both were rendered.
+fn joint_versus_pairs(rows: &[Row]) -> Option<String> {
+    let pairs: Vec<(&Row, &Row)> = rows
+        .iter()
+        .filter(|r| r.sampler == SOBOL)
+        .filter_map(|r| Some((r, partner(rows, r, TracerSampler::SobolPairs)?)))
+        .collect();
+    if pairs.is_empty() {
+        return None;
+    }
+    let mut text = String::from(
+        "#### Film and lens: one 4D draw (sobol) / two pairs (sobol-pairs)\n\n| scene | spp | seeds | RMSE ratio | blurred RMSE ratio | time ratio |\n| --- | ---: | ---: | ---: | ---: | ---: |\n",
+    );
+    for (joint, paired) in pairs {
+        let _ = writeln!(
+            text,
+            "| {} {}x{} | {} | {} | {:.3} | {:.3} | {:.2} |",
+            joint.scene,
+            joint.width,
+            joint.height,
+            joint.spp,
+            joint.seeds,
+            joint.rmse / paired.rmse,
+            joint.blurred_rmse / paired.blurred_rmse,
+            joint.seconds / paired.seconds,
+        );
+    }
     Some(text)
 }
 
@@ -362,8 +395,8 @@ mod tests {
 
     #[test]
     fn claims_need_their_evidence() {
-        let sobol = TracerSampler::Padded(SamplerKind::Sobol);
-        let random = TracerSampler::Padded(SamplerKind::Random);
+        let sobol = SOBOL;
+        let random = TracerSampler::Pixel(PixelSamplerKind::Padded(SamplerKind::Random));
         // No random in the run: no claim about random.
         assert_eq!(versus_random(&[row(sobol, 16, 0.01)]), None);
         // Random only below 16 spp: no claim either.
@@ -377,10 +410,23 @@ mod tests {
         assert!(claim.starts_with("Not below"), "{claim}");
         // zsobol against sobol only when both ran.
         assert_eq!(zsobol_versus_sobol(&[row(sobol, 16, 0.01)]), None);
-        let table =
-            zsobol_versus_sobol(&[row(sobol, 16, 0.02), row(TracerSampler::ZSobol, 16, 0.01)])
-                .unwrap();
+        let table = zsobol_versus_sobol(&[
+            row(sobol, 16, 0.02),
+            row(TracerSampler::Pixel(PixelSamplerKind::ZSobol), 16, 0.01),
+        ])
+        .unwrap();
         assert!(table.contains("| 0.500 | 0.500 | 0.250 |"), "{table}");
+        // sobol against sobol-pairs only when both ran.
+        assert_eq!(joint_versus_pairs(&[row(SOBOL, 16, 0.01)]), None);
+        let table = joint_versus_pairs(&[
+            row(SOBOL, 16, 0.01),
+            row(TracerSampler::SobolPairs, 16, 0.02),
+        ])
+        .unwrap();
+        assert!(
+            table.contains("| 16 | 1 | 0.500 | 0.500 | 1.00 |"),
+            "{table}"
+        );
     }
 
     #[test]
