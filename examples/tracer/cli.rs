@@ -19,7 +19,7 @@ Output, under --out (default out/), per scene as <scene>-<W>x<H>-<filter>/:
                              against: what infinitely many samples would give
                              under the same filter (exact or quadrature where
                              the scene allows, else 4096 samples per pixel;
-                             cornell: 1024 Sobol' samples per pixel);
+                             cornell: 4096 Sobol' samples per pixel);
                              cached as out/reference-*.bin
   <sampler>-<spp>spp.png     each frame (the first seed's)
   contact-<spp>spp.png       the reference and every sampler, cropped to

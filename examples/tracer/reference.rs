@@ -11,7 +11,7 @@
 //!   against the pixel, for every pixel whose footprint meets at most 10^4
 //!   squares. The few rows just below the horizon (and the horizon row,
 //!   which sees squares out to infinity) are sampled densely, as below.
-//! - `cornell` (box filter only): 1024 Sobol' samples per pixel through
+//! - `cornell` (box filter only): 4096 Sobol' samples per pixel through
 //!   domains that no compared frame uses (`path.rs`), cached in a file named
 //!   after a fingerprint of the path tracer.
 //! - anything else (`checker` and `polygon` under a wide filter): the render
