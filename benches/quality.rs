@@ -9,7 +9,10 @@
 //! - the RMSE of estimating the integrals of the test integrands of
 //!   Christensen, Kensler & Kilpatrick 2018 (disk, triangle, step, Gaussian,
 //!   bilinear), and the least-squares slope of log RMSE against log n;
-//! - the radially averaged power spectrum at one n.
+//! - the radially averaged power spectrum at one n;
+//! - a coupled 4D integrand through `Domain::next_4d` and through two
+//!   padded pairs, per pixel of a 64 x 64 film at n = 16 to 1024
+//!   (`quality_4d.rs`).
 //!
 //! Markdown tables go to stdout and `target/quality/report.md`; SVG plots
 //! (convergence per integrand, each sampler's points, the spectra) next to
@@ -26,9 +29,11 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use wellspread::glam::Vec2;
-use wellspread::hash::pattern_seed;
 use wellspread::metrics;
+use wellspread::primitives::pattern_seed;
 use wellspread::{AnySampler, Sampler2D, SamplerKind};
+
+mod quality_4d;
 
 /// How big a run is.
 struct Config {
@@ -582,6 +587,9 @@ fn main() {
         }
         report.push('\n');
     }
+
+    // The 4D section: one 4D draw against padded pairs.
+    report.push_str(&quality_4d::section(config.quick, log_log_slope));
 
     let tables_end = report.len();
 

@@ -4,12 +4,13 @@
 //! rays go decides how much aliasing and noise the image has. wellspread
 //! generates the patterns graphics engineers know (regular, random,
 //! jittered, n-rooks, multi-jittered) and better ones (correlated
-//! multi-jitter, and the progressive low-discrepancy sequences [`Sobol`],
-//! [`Pmj02`], [`Halton`] and [`Hammersley`]), and measures them
-//! ([`metrics`]). The sequences accept any index below 2^32 and keep their
-//! guarantees at every power-of-two prefix.
+//! multi-jitter, the low-discrepancy [`Hammersley`] set of at most 2^24
+//! points, and the progressive sequences [`Sobol`], [`Pmj02`] and
+//! [`Halton`]), and measures them ([`metrics`]). The sequences
+//! ([`Sequence2D`]) accept any index below 2^32 and keep their guarantees
+//! at every power-of-two prefix.
 //!
-//! Every sampler implements [`Sampler2D`]: sample `index` of pattern
+//! Every sampler kind implements [`Sampler2D`]: sample `index` of pattern
 //! `pattern` in O(1), with no tables and no shared state, so any thread
 //! rendering any tile gets the same sample. Every coordinate is in `[0, 1)`
 //! after f32 rounding.
@@ -99,6 +100,10 @@
 //! - `rayon` (off): runs the hidden O(n^2) wrap-around L2 oracle that the
 //!   tests compare the O(n log n) metric with on rayon's thread pool;
 //!   results do not depend on the thread count. No public metric needs it.
+//! - `simd` (default): `fill` on AVX2 or AVX-512 when the CPU has them
+//!   (detected at run time, with `std`). Without it the crate is
+//!   `#![forbid(unsafe_code)]` and `fill` runs the portable loop only, with
+//!   bit-identical values: a build for auditors.
 //! - `serde` (off): `Serialize` / `Deserialize` for [`SamplerKind`], as its
 //!   kebab-case name (`"n-rooks"`), so settings files can name a sampler.
 //!
@@ -107,7 +112,9 @@
 #![no_std]
 // `unsafe` is denied everywhere but in `simd`, the one audited module:
 // calling a function compiled for AVX2 or AVX-512 after detecting the CPU.
-#![deny(unsafe_code)]
+// Without the `simd` feature there is none at all.
+#![cfg_attr(feature = "simd", deny(unsafe_code))]
+#![cfg_attr(not(feature = "simd"), forbid(unsafe_code))]
 #![deny(missing_docs, missing_debug_implementations)]
 #![doc(test(attr(deny(warnings))))]
 
@@ -123,20 +130,10 @@ mod error;
 pub mod metrics;
 mod pixel;
 pub mod primitives;
-mod sampler;
 mod samplers;
 mod simd;
+mod traits;
 pub mod warp;
-
-/// The primitives under their first name: `wellspread::hash::pattern_seed`
-/// and the rest keep working. New code should use [`primitives`].
-pub mod hash {
-    pub use crate::primitives::{
-        MAX_STRATA, ONE_MINUS_EPSILON, UNIT_BITS, hash_combine, hash_u32, owen_scramble,
-        owen_scramble_reversed, pattern_seed, permute, radical_inverse_2, rand_u32,
-        stratum_to_unit_f32, u32_to_unit_f32,
-    };
-}
 
 pub use error::{Error, InputText};
 pub use pixel::{
@@ -144,11 +141,11 @@ pub use pixel::{
     PixelSamplerKind, Root, ZSobol,
 };
 pub use primitives::pattern_seed;
-pub use sampler::Sampler2D;
 pub use samplers::{
     AnySampler, CorrelatedMultiJittered, Halton, Hammersley, Jittered, LatinHypercube,
     MultiJittered, NRooks, Pmj02, Random, Regular, SamplerKind, Sobol,
 };
+pub use traits::{Sampler2D, Sequence2D};
 
 // The README's usage example runs as a doctest.
 #[cfg(doctest)]

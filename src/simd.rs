@@ -10,8 +10,10 @@
 //! the end), every path gives bit-identical points; the tests below check
 //! each path the running CPU supports against `sample` for every sampler.
 //!
-//! On x86 and x86-64 with `std`, [`Isa::best`] picks AVX-512 (16 lanes),
-//! AVX2 (8 lanes) or the portable loop at run time. Without `std` (no CPU
+//! On x86 and x86-64 with `std` and the `simd` feature, [`Isa::best`]
+//! picks AVX-512 (16 lanes), AVX2 (8 lanes) or the portable loop at run
+//! time. Without `simd` this module has no `unsafe` and every path is the
+//! portable loop. Without `std` (no CPU
 //! detection) the portable loop is compiled for whatever
 //! `cfg!(target_feature)` the build enables, for example with
 //! `-C target-cpu=native`.
@@ -74,7 +76,7 @@ impl Isa {
     pub(crate) const ALL: [Isa; 4] = [Isa::Portable, Isa::PortableWide, Isa::Avx2, Isa::Avx512];
 
     /// The widest instruction set this CPU runs (detected once by `std`
-    /// and cached); [`Isa::Portable`] without `std` or off x86.
+    /// and cached); [`Isa::Portable`] without `simd` or `std`, or off x86.
     #[inline]
     pub(crate) fn best() -> Isa {
         if Isa::Avx512.is_supported() {
@@ -93,16 +95,28 @@ impl Isa {
             Isa::Portable => true,
             #[cfg(test)]
             Isa::PortableWide => true,
-            #[cfg(all(feature = "std", any(target_arch = "x86", target_arch = "x86_64")))]
+            #[cfg(all(
+                feature = "simd",
+                feature = "std",
+                any(target_arch = "x86", target_arch = "x86_64")
+            ))]
             Isa::Avx2 => std::is_x86_feature_detected!("avx2"),
-            #[cfg(all(feature = "std", any(target_arch = "x86", target_arch = "x86_64")))]
+            #[cfg(all(
+                feature = "simd",
+                feature = "std",
+                any(target_arch = "x86", target_arch = "x86_64")
+            ))]
             Isa::Avx512 => {
                 std::is_x86_feature_detected!("avx512f")
                     && std::is_x86_feature_detected!("avx512bw")
                     && std::is_x86_feature_detected!("avx512dq")
                     && std::is_x86_feature_detected!("avx512vl")
             }
-            #[cfg(not(all(feature = "std", any(target_arch = "x86", target_arch = "x86_64"))))]
+            #[cfg(not(all(
+                feature = "simd",
+                feature = "std",
+                any(target_arch = "x86", target_arch = "x86_64")
+            )))]
             Isa::Avx2 | Isa::Avx512 => false,
         }
     }
@@ -113,7 +127,11 @@ impl Isa {
 /// Callers keep `start + out.len() <= 2^32`.
 pub(crate) fn fill_on<K: Kernel>(isa: Isa, kernel: &K, start: u32, out: &mut [Vec2]) {
     debug_assert!(start as u64 + out.len() as u64 <= 1 << 32);
-    #[cfg(all(feature = "std", any(target_arch = "x86", target_arch = "x86_64")))]
+    #[cfg(all(
+        feature = "simd",
+        feature = "std",
+        any(target_arch = "x86", target_arch = "x86_64")
+    ))]
     match isa {
         Isa::Avx512 if Isa::Avx512.is_supported() => {
             // SAFETY: `fill_avx512` only requires that the CPU supports the
@@ -146,13 +164,21 @@ pub(crate) fn fill_on<K: Kernel>(isa: Isa, kernel: &K, start: u32, out: &mut [Ve
     fill_lanes::<K, 8>(kernel, start, out);
 }
 
-#[cfg(all(feature = "std", any(target_arch = "x86", target_arch = "x86_64")))]
+#[cfg(all(
+    feature = "simd",
+    feature = "std",
+    any(target_arch = "x86", target_arch = "x86_64")
+))]
 #[target_feature(enable = "avx2")]
 fn fill_avx2<K: Kernel>(kernel: &K, start: u32, out: &mut [Vec2]) {
     fill_lanes::<K, 8>(kernel, start, out);
 }
 
-#[cfg(all(feature = "std", any(target_arch = "x86", target_arch = "x86_64")))]
+#[cfg(all(
+    feature = "simd",
+    feature = "std",
+    any(target_arch = "x86", target_arch = "x86_64")
+))]
 #[target_feature(enable = "avx512f,avx512bw,avx512dq,avx512vl")]
 fn fill_avx512<K: Kernel>(kernel: &K, start: u32, out: &mut [Vec2]) {
     fill_lanes::<K, 16>(kernel, start, out);
@@ -180,7 +206,7 @@ fn fill_lanes<K: Kernel, const N: usize>(kernel: &K, start: u32, out: &mut [Vec2
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sampler::FillOn;
+    use crate::traits::FillOn;
     use crate::{Sampler2D, SamplerKind};
 
     #[test]

@@ -187,7 +187,7 @@ pub trait PixelSampler: Send + Sync {
 
     /// The domain of sample `index` of `pixel`: the pixel is hashed here,
     /// once; every draw after costs one hash and the sampler's kernel.
-    #[inline]
+    #[inline(always)]
     fn start(&self, pixel: [u32; 2], index: u32) -> Domain<Self>
     where
         Self: Sized + Copy,

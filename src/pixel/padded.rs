@@ -8,10 +8,10 @@ use crate::primitives::{
     hash_combine, hash_u32, owen_scramble, owen_scramble_reversed, pattern_seed, permute, rand_u32,
     stratum_to_unit_f32, u32_to_unit_f32,
 };
-use crate::samplers::digital::OwenSeeds;
-use crate::samplers::pmj02::{stirling_x, stirling_y};
+use crate::samplers::sequence::digital::OwenSeeds;
+use crate::samplers::sequence::pmj02::{stirling_x, stirling_y};
 use crate::samplers::sequence::sobol_4d::dimensions_2_3_reversed;
-use crate::samplers::sobol::pascal_reversed;
+use crate::samplers::sequence::sobol::pascal_reversed;
 use crate::{
     AnySampler, CorrelatedMultiJittered, Halton, Hammersley, Jittered, MultiJittered, NRooks,
     Pmj02, Random, Regular, Sampler2D, Sobol,
@@ -115,7 +115,7 @@ impl<S: DomainSampler + Send + Sync> PixelSampler for Padded<S> {
     /// The key: a 64-bit mix of `(x, y)` and the frame, so distinct pixels
     /// of one frame never share a key before the final truncation to 32
     /// bits.
-    #[inline]
+    #[inline(always)]
     fn root(&self, [x, y]: [u32; 2]) -> Root {
         let packed = (u64::from(y) << 32 | u64::from(x)) ^ u64::from(self.frame_key) << 32;
         Root {
@@ -179,7 +179,7 @@ const fn mix64(mut z: u64) -> u32 {
 /// | grid ([`Regular`], [`Jittered`], [`NRooks`], [`MultiJittered`], [`CorrelatedMultiJittered`]) and [`Hammersley`] | the `n` samples in `n` distinct strata of `[0, 1)` (a keyed permutation of the index, jittered inside the stratum; centred for `Regular`) | `sample(index, stream)`: the sampler's own set | padded: a pair and a 1D draw, or two pairs, from unrelated streams |
 /// | [`Sobol`], [`Pmj02`] | Owen-scrambled Sobol' dimension 0 of the shuffled index: a (0,m,1)-net on every power-of-two prefix | the sampler's own (0,2)-sequence, seeds taken from `stream` without further hashing | one Owen-scrambled 4D Sobol' set: (3,m,4)-nets on every power-of-two prefix (`m >= 3`), dimensions (0, 1) a (0,2)-sequence; 3D is its first three coordinates |
 /// | [`Halton`] | as Sobol's 1D | `sample(index, stream)` | padded |
-/// | [`Random`] | one independent uniform value (no stratification: the baseline) | `sample(index, stream)` | padded |
+/// | [`Random`] | one independent uniform value (no stratification: the baseline) | independent uniform points (one hash per coordinate; not `sample`'s values) | padded |
 ///
 /// The draws of [`Pmj02`] in 3D and 4D are the Sobol' set's (pmj02 has no
 /// 4D construction); its 2D draws stay pmj02.
@@ -392,10 +392,24 @@ impl DomainSampler for Halton {
     }
 }
 
+/// Random's draws hash the index into the already mixed `stream` (a
+/// Weyl step and one hash per coordinate) instead of hashing a pattern
+/// first: independent uniform values, other than `sample`'s.
+#[inline(always)]
+const fn random_bits(index: u32, stream: u32) -> u32 {
+    hash_u32(stream.wrapping_add(index.wrapping_mul(0x9e37_79b9)))
+}
+
 impl DomainSampler for Random {
     #[inline]
     fn domain_1d(&self, index: u32, stream: u32) -> f32 {
-        u32_to_unit_f32(rand_u32(index, stream))
+        u32_to_unit_f32(random_bits(index, stream))
+    }
+    #[inline]
+    fn domain_2d(&self, index: u32, stream: u32) -> Vec2 {
+        let x = random_bits(index, stream);
+        let y = hash_u32(x ^ 0x711a_d6a5);
+        Vec2::new(u32_to_unit_f32(x), u32_to_unit_f32(y))
     }
 }
 

@@ -3,9 +3,9 @@ use glam::{Vec2, Vec3, Vec4};
 use super::padded::{seeds_2d, sobol_1d_at, sobol_2d_at, sobol_4d_at};
 use super::{Draw, PixelSampler, Root};
 use crate::Error;
-use crate::primitives::{hash_combine, hash_u32};
-use crate::samplers::digital::{OwenSeeds, bits_to_point, scrambled_bits};
-use crate::samplers::sobol::pascal_reversed;
+use crate::primitives::{hash_combine, hash_u32, owen_scramble};
+use crate::samplers::sequence::digital::{OwenSeeds, bits_to_point, scrambled_bits};
+use crate::samplers::sequence::sobol::pascal_reversed;
 
 /// The 24 permutations of `{0, 1, 2, 3}` in lexicographic order, each packed
 /// two bits per entry: entry `d` is `(PERMUTATIONS_4[p] >> 2 d) & 3`.
@@ -106,8 +106,10 @@ const INDEX_BITS: u32 = 32;
 /// # Domains
 ///
 /// Through a [`Domain`](crate::Domain) each draw uses the same Morton
-/// ordering and digit permutations as `sample_pixel`, keyed by the draw's
-/// stream instead of `(frame, dimension)`, so every draw keeps the
+/// ordering as `sample_pixel`, keyed by the draw's stream instead of
+/// `(frame, dimension)`, with the blocks of each level shuffled by one
+/// base-2 nested scramble instead of a hashed base-4 permutation per digit
+/// (so the values differ from `sample_pixel`'s), and every draw keeps the
 /// properties above: 2D draws are Sobol' dimensions (0, 1) of the pixel's
 /// permuted block; 1D draws its dimension 0 (a (0,m,1)-net per pixel); 3D
 /// and 4D draws the 4D Sobol' set of [`DomainSampler`](crate::DomainSampler)'s
@@ -147,6 +149,8 @@ pub struct ZSobol {
     /// counted as one.
     base4_digits: u32,
     frame: u32,
+    /// The root key of its domains, hashed from the frame once here.
+    frame_key: u32,
 }
 
 impl ZSobol {
@@ -194,6 +198,7 @@ impl ZSobol {
             log2_spp,
             base4_digits: log2_side + log2_spp.div_ceil(2),
             frame,
+            frame_key: hash_u32(frame ^ 0x7a3c_9e15),
         })
     }
 
@@ -211,17 +216,25 @@ impl ZSobol {
 
     /// `pixel` on the film, and 0 if it was there or else a nonzero key of
     /// the tile of the film's repetition it fell in.
-    #[inline]
+    #[inline(always)]
     fn on_film(&self, [x, y]: [u32; 2]) -> ([u32; 2], u32) {
         let [width, height] = self.resolution;
         if x < width && y < height {
             ([x, y], 0)
         } else {
-            (
-                [x % width, y % height],
-                hash_combine(x / width, y / height) | 1,
-            )
+            self.wrap_onto_film([x, y])
         }
+    }
+
+    /// [`on_film`](Self::on_film) for a pixel off the film, out of line.
+    #[cold]
+    #[inline(never)]
+    fn wrap_onto_film(&self, [x, y]: [u32; 2]) -> ([u32; 2], u32) {
+        let [width, height] = self.resolution;
+        (
+            [x % width, y % height],
+            hash_combine(x / width, y / height) | 1,
+        )
     }
 
     /// The pixel's Morton index shifted up by `m`: the first sequence index
@@ -229,7 +242,24 @@ impl ZSobol {
     /// `2 log2(side) + m <= 32`, so it fits for pixels on the film.
     #[inline]
     fn block_start(&self, [x, y]: [u32; 2]) -> u32 {
-        (morton(x, y) << self.log2_spp) as u32
+        // On the film both coordinates are below 2^16 (`new` checked the
+        // index space), so the 32-bit interleave is exact; it also keeps
+        // the low 16 bits of larger ones, as the 64-bit form did.
+        (morton_32(x, y) << self.log2_spp) as u32
+    }
+
+    /// The Sobol index of sample `index` of the pixel whose block starts
+    /// at `block`, for a [`Domain`](crate::Domain) draw keyed `stream`: the
+    /// Morton-ordered index under a base-2 nested scramble
+    /// ([`owen_scramble`]: every bit flipped by a hash of the bits above
+    /// it), which permutes the blocks of every level of the Morton
+    /// hierarchy among themselves as the base-4 digit permutations of
+    /// `sample_pixel` do, from the 8 of the 24 orders of each quad that
+    /// nested bit flips reach, at the cost of one scramble instead of one
+    /// hash per digit.
+    #[inline(always)]
+    fn draw_index(&self, block: u32, index: u32, stream: u32) -> u32 {
+        owen_scramble(block | (index & (self.samples_per_pixel - 1)), stream)
     }
 
     /// The Sobol index of sample `index` (below spp) of the pixel whose
@@ -257,21 +287,20 @@ impl ZSobol {
     }
 }
 
-/// `x` and `y` interleaved, `x` in the even bits (a Z-order curve).
+/// The low 16 bits of `x` and `y` interleaved, `x` in the even bits.
 #[inline]
-const fn morton(x: u32, y: u32) -> u64 {
-    spread_bits(x) | spread_bits(y) << 1
+const fn morton_32(x: u32, y: u32) -> u64 {
+    (spread_16(x) | spread_16(y) << 1) as u64
 }
 
-/// The bits of `v` moved to the even positions of a u64.
+/// The low 16 bits of `v` moved to the even positions of a u32.
 #[inline]
-const fn spread_bits(v: u32) -> u64 {
-    let mut v = v as u64;
-    v = (v | v << 16) & 0x0000_ffff_0000_ffff;
-    v = (v | v << 8) & 0x00ff_00ff_00ff_00ff;
-    v = (v | v << 4) & 0x0f0f_0f0f_0f0f_0f0f;
-    v = (v | v << 2) & 0x3333_3333_3333_3333;
-    v = (v | v << 1) & 0x5555_5555_5555_5555;
+const fn spread_16(v: u32) -> u32 {
+    let mut v = v & 0xffff;
+    v = (v | v << 8) & 0x00ff_00ff;
+    v = (v | v << 4) & 0x0f0f_0f0f;
+    v = (v | v << 2) & 0x3333_3333;
+    v = (v | v << 1) & 0x5555_5555;
     v
 }
 
@@ -321,10 +350,10 @@ impl PixelSampler for ZSobol {
 
     /// The key from the frame (and the tile, off the film), the pixel
     /// state the Morton block start.
-    #[inline]
+    #[inline(always)]
     fn root(&self, pixel: [u32; 2]) -> Root {
         let (pixel, tile) = self.on_film(pixel);
-        let key = hash_u32(self.frame ^ 0x7a3c_9e15);
+        let key = self.frame_key;
         Root {
             key: if tile == 0 {
                 key
@@ -338,14 +367,14 @@ impl PixelSampler for ZSobol {
     #[inline]
     fn draw_1d(&self, draw: Draw) -> f32 {
         let seeds = seeds_2d(draw.stream);
-        let s = self.sequence_index(draw.pixel_state, draw.index, seeds.index);
+        let s = self.draw_index(draw.pixel_state, draw.index, seeds.index);
         sobol_1d_at(s, seeds.x)
     }
 
     #[inline]
     fn draw_2d(&self, draw: Draw) -> Vec2 {
         let seeds = seeds_2d(draw.stream);
-        let s = self.sequence_index(draw.pixel_state, draw.index, seeds.index);
+        let s = self.draw_index(draw.pixel_state, draw.index, seeds.index);
         sobol_2d_at(s, seeds)
     }
 
@@ -356,7 +385,7 @@ impl PixelSampler for ZSobol {
 
     #[inline]
     fn draw_4d(&self, draw: Draw) -> Vec4 {
-        let s = self.sequence_index(draw.pixel_state, draw.index, draw.stream);
+        let s = self.draw_index(draw.pixel_state, draw.index, draw.stream);
         sobol_4d_at(s, draw.stream)
     }
 }
@@ -381,11 +410,12 @@ mod tests {
 
     #[test]
     fn morton_interleaves_x_in_the_even_bits() {
-        assert_eq!(morton(1, 0), 1);
-        assert_eq!(morton(0, 1), 2);
-        assert_eq!(morton(3, 3), 15);
-        assert_eq!(morton(0b101, 0b010), 0b01_10_01);
-        assert_eq!(morton(u32::MAX, 0), 0x5555_5555_5555_5555);
+        assert_eq!(morton_32(1, 0), 1);
+        assert_eq!(morton_32(0, 1), 2);
+        assert_eq!(morton_32(3, 3), 15);
+        assert_eq!(morton_32(0b101, 0b010), 0b01_10_01);
+        assert_eq!(morton_32(0xffff, 0), 0x5555_5555);
+        assert_eq!(morton_32(0xffff, 0xffff), 0xffff_ffff);
     }
 
     #[test]

@@ -36,7 +36,7 @@ pub const fn hash_combine(seed: u32, value: u32) -> u32 {
 /// dimensions: never by reusing one pattern.
 ///
 /// ```
-/// use wellspread::hash::pattern_seed;
+/// use wellspread::primitives::pattern_seed;
 /// let pixel = pattern_seed(10, 20, 0, 0);
 /// let lens = pattern_seed(10, 20, 0, 1);
 /// assert_ne!(pixel, lens);
@@ -67,13 +67,15 @@ pub const fn rand_u32(index: u32, pattern: u32) -> u32 {
     i
 }
 
-/// Salts that split one hashed pattern into independent seeds, one per
-/// random choice a sampler makes (sample order, x shuffle, y shuffle, x
-/// jitter, y jitter). Samplers compute `hash_u32(pattern) ^ SALT`, which
-/// costs one hash per sample instead of one per choice; the constants are
-/// Kensler's (2013) pattern multipliers, odd with about half their bits
-/// set, reused here as xor salts so that pattern 0 still
-/// yields five unrelated seeds.
+/// Salts that split one `pattern_hash = hash_u32(pattern)` into independent
+/// inputs, one per random choice a sampler makes (sample order, x shuffle,
+/// y shuffle, x jitter, y jitter), at one hash per pattern instead of one
+/// per choice. Permutation keys are `derived_key(pattern_hash, SALT)` (a
+/// rotation and a multiply on top of the xor: keys that differ by a bare
+/// xor correlate the Fisher-Yates shuffles); the jitter and the sequences'
+/// Owen seeds feed `pattern_hash ^ SALT` to a further hash. The constants
+/// are Kensler's (2013) pattern multipliers, odd with about half their bits
+/// set, so that pattern 0 still yields five unrelated inputs.
 pub(crate) mod salt {
     pub(crate) const ORDER: u32 = 0x51633e2d;
     pub(crate) const SHUFFLE_X: u32 = 0xa511e9b3;

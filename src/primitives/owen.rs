@@ -9,7 +9,7 @@
 /// of a reversed value is the digit of weight `2^-(k+1)`.
 ///
 /// ```
-/// use wellspread::hash::radical_inverse_2;
+/// use wellspread::primitives::radical_inverse_2;
 /// assert_eq!(radical_inverse_2(1), 1 << 31); // 1/2
 /// assert_eq!(radical_inverse_2(6), 3 << 29); // 0.011 in binary = 3/8
 /// ```
@@ -33,7 +33,7 @@ pub const fn radical_inverse_2(index: u32) -> u32 {
 /// maps onto one of the same size, so (t, m, 2)-nets stay nets.
 ///
 /// ```
-/// use wellspread::hash::owen_scramble_reversed;
+/// use wellspread::primitives::owen_scramble_reversed;
 /// // The most significant digit (bit 0 here) flips or not by the seed alone.
 /// let flip = owen_scramble_reversed(0, 7) & 1;
 /// assert!((0..64).all(|x| (owen_scramble_reversed(x, 7) ^ x) & 1 == flip));
@@ -64,7 +64,7 @@ pub const fn owen_scramble_reversed(mut x: u32, seed: u32) -> u32 {
 /// independent.
 ///
 /// ```
-/// use wellspread::hash::owen_scramble;
+/// use wellspread::primitives::owen_scramble;
 /// let mut block: Vec<u32> = (0..16).map(|i| owen_scramble(i, 99) / 16).collect();
 /// block.dedup();
 /// assert_eq!(block.len(), 1); // the first 16 land in one aligned block of 16

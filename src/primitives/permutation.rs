@@ -37,7 +37,7 @@ pub const SHORT_LEN: u32 = 8;
 /// every permutation appears `floor(2^32 / len!)` or `ceil(2^32 / len!)`
 /// times. Longer lengths use a keyed bijective hash of the next power of two
 /// with cycle walking, after Kensler 2013,
-/// whose uniformity `tests/permute.rs` measures (pair frequencies, distinct
+/// whose uniformity `tests/primitives.rs` measures (pair frequencies, distinct
 /// permutations).
 ///
 /// Cost: one hash of `pattern`, then for `len <= 8` up to seven swap steps
@@ -82,8 +82,8 @@ const fn permute_key(pattern: u32) -> u32 {
     hash_u32(pattern ^ 0x9e37_79b9)
 }
 
-/// The key of one of several permutations drawn from one hashed pattern
-/// `seed`, told apart by `salt`: `seed` xored with `salt` and rotated by
+/// The key of one of several permutations drawn from one `pattern_hash`,
+/// told apart by `salt`: `pattern_hash` xored with `salt` and rotated by
 /// `salt`'s top five bits, then one multiply and a fold of the high half
 /// onto the low half (5 operations instead of a 7-operation hash per
 /// permutation).
@@ -91,17 +91,13 @@ const fn permute_key(pattern: u32) -> u32 {
 /// The rotation is what keeps the keys of one pattern apart: the
 /// Fisher-Yates shuffles read a key from its top bits down, and the
 /// product's top bits come mostly from the top bits of what is multiplied,
-/// so each key's top bits come from a different part of `seed`. (Salting
-/// by xor alone kept the keys' top bits a near-fixed function of each
-/// other and measurably correlated the shuffles; multiplying `seed` by a
-/// different odd number per key gave every key 0 for `seed = 0` and equal
-/// keys for `seed = 2^31`.) The multiplier is [`hash_u32`]'s first. A
-/// bijection of `seed` for each salt, so each permutation alone keeps the
-/// exact uniformity of [`permute`]; `tests/permute.rs` measures the joint
-/// uniformity.
+/// so each key's top bits come from a different part of `pattern_hash`.
+/// The multiplier is [`hash_u32`]'s first. A bijection of `pattern_hash`
+/// for each salt, so each permutation alone keeps the exact uniformity of
+/// [`permute`]; `tests/primitives.rs` measures the joint uniformity.
 #[inline(always)]
-pub(crate) const fn derived_key(seed: u32, salt: u32) -> u32 {
-    let k = (seed ^ salt)
+pub(crate) const fn derived_key(pattern_hash: u32, salt: u32) -> u32 {
+    let k = (pattern_hash ^ salt)
         .rotate_left(salt >> 27)
         .wrapping_mul(0x7feb_352d);
     k ^ (k >> 15)

@@ -23,7 +23,7 @@ pub const ONE_MINUS_EPSILON: f32 = 1.0 - f32::EPSILON / 2.0;
 /// `2^-32` would round values above `1 - 2^-25` up to 1.0.)
 ///
 /// ```
-/// use wellspread::hash::u32_to_unit_f32;
+/// use wellspread::primitives::u32_to_unit_f32;
 /// assert_eq!(u32_to_unit_f32(0), 0.0);
 /// assert!(u32_to_unit_f32(u32::MAX) < 1.0);
 /// ```
@@ -63,7 +63,7 @@ const fn to_unit_f32(t: u32) -> f32 {
 /// If `strata` is 0.
 ///
 /// ```
-/// use wellspread::hash::stratum_to_unit_f32;
+/// use wellspread::primitives::stratum_to_unit_f32;
 /// let n = 3_000_017; // prime, and 2^24 / n is not an integer
 /// let x = stratum_to_unit_f32(n - 1, n, u32::MAX);
 /// assert!(x < 1.0);

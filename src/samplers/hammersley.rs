@@ -3,8 +3,8 @@ use glam::Vec2;
 use crate::primitives::{
     InvariantDivisor, MAX_STRATA, hash_u32, owen_scramble_reversed, rand_u32, salt, u32_to_unit_f32,
 };
-use crate::sampler::{FillOn, Sampler2D, check_fill_len, debug_check_index};
 use crate::simd::{self, Isa, PointKernel, Pointwise};
+use crate::traits::{FillOn, Sampler2D, check_fill_len, debug_check_index};
 use crate::{Error, SamplerKind};
 
 /// The Hammersley set `(i / n, phi_2(i))`, randomised: scrambled.
@@ -34,9 +34,7 @@ use crate::{Error, SamplerKind};
 ///
 /// One pattern hash (once per [`fill`](Sampler2D::fill)), one [`rand_u32`](crate::primitives::rand_u32)
 /// and one Owen-scramble hash, one bit reversal and one fixed-point stratum
-/// conversion per sample. `fill` runs the same formula on 8 or 16 lanes at once (AVX2 or AVX-512,
-/// detected at run time), bit for bit equal to `sample`; measured ratios to a
-/// `rand_pcg::Pcg32` fill are in `docs/performance.md`.
+/// conversion per sample.
 ///
 /// # Limits
 ///
@@ -104,15 +102,17 @@ impl Hammersley {
 }
 
 impl Hammersley {
-    /// Sample `index < n` given the pattern's hash `seed`: the one formula
-    /// `sample` and `fill` share.
+    /// Sample `index < n` given `pattern_hash`, the hash of the pattern:
+    /// the one formula `sample` and `fill` share.
     #[inline(always)]
-    fn point(&self, seed: u32, index: u32) -> Vec2 {
+    fn point(&self, pattern_hash: u32, index: u32) -> Vec2 {
         Vec2::new(
             self.n
-                .stratum_to_unit_f32(index, rand_u32(index, seed ^ salt::JITTER_X)),
+                .stratum_to_unit_f32(index, rand_u32(index, pattern_hash ^ salt::JITTER_X)),
             // In reversed bit order the radical inverse of `index` is `index`.
-            u32_to_unit_f32(owen_scramble_reversed(index, seed ^ salt::JITTER_Y).reverse_bits()),
+            u32_to_unit_f32(
+                owen_scramble_reversed(index, pattern_hash ^ salt::JITTER_Y).reverse_bits(),
+            ),
         )
     }
 }
@@ -120,13 +120,13 @@ impl Hammersley {
 /// One pattern of [`Hammersley`]: its hash.
 struct HammersleyKernel<'a> {
     sampler: &'a Hammersley,
-    seed: u32,
+    pattern_hash: u32,
 }
 
 impl PointKernel for HammersleyKernel<'_> {
     #[inline(always)]
     fn point(&self, index: u32) -> Vec2 {
-        self.sampler.point(self.seed, index)
+        self.sampler.point(self.pattern_hash, index)
     }
 }
 
@@ -145,12 +145,14 @@ impl Sampler2D for Hammersley {
         } else {
             self.len() - 1
         };
-        let seed = hash_u32(pattern);
-        let p = self.point(seed, column);
+        let pattern_hash = hash_u32(pattern);
+        let p = self.point(pattern_hash, column);
         // The y coordinate keeps the unclamped index, as a sequence would.
         Vec2::new(
             p.x,
-            u32_to_unit_f32(owen_scramble_reversed(index, seed ^ salt::JITTER_Y).reverse_bits()),
+            u32_to_unit_f32(
+                owen_scramble_reversed(index, pattern_hash ^ salt::JITTER_Y).reverse_bits(),
+            ),
         )
     }
 
@@ -162,10 +164,10 @@ impl Sampler2D for Hammersley {
 impl FillOn for Hammersley {
     fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
         check_fill_len(out.len(), self.len());
-        let seed = hash_u32(pattern);
+        let pattern_hash = hash_u32(pattern);
         let kernel = HammersleyKernel {
             sampler: self,
-            seed,
+            pattern_hash,
         };
         simd::fill_on(isa, &Pointwise(kernel), 0, out);
     }

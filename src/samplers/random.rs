@@ -2,8 +2,8 @@ use glam::Vec2;
 
 use crate::Error;
 use crate::primitives::{hash_combine, hash_u32, salt, u32_to_unit_f32};
-use crate::sampler::{FillOn, Sampler2D, check_fill_len, debug_check_index};
 use crate::simd::{self, Isa, PointKernel, Pointwise};
+use crate::traits::{FillOn, Sampler2D, check_fill_len, debug_check_index};
 
 /// Independent uniform points: the baseline every other sampler must beat.
 ///
@@ -15,9 +15,7 @@ use crate::simd::{self, Isa, PointKernel, Pointwise};
 /// # Cost
 ///
 /// Three 32-bit integer hashes per sample after one hash of the pattern
-/// (once per `fill`); no division, no loop. `fill` runs the same formula on 8 or 16 lanes at once (AVX2 or AVX-512,
-/// detected at run time), bit for bit equal to `sample`; measured ratios to a
-/// `rand_pcg::Pcg32` fill are in `docs/performance.md`.
+/// (once per `fill`); no division, no loop.
 ///
 /// # Limits
 ///
@@ -58,20 +56,20 @@ impl Random {
 }
 
 impl Random {
-    /// Sample `index` given the pattern's hash `seed`: the one formula
-    /// `sample` and `fill` share.
+    /// Sample `index` given `pattern_hash`, the hash of the pattern: the one
+    /// formula `sample` and `fill` share.
     #[inline(always)]
-    fn point(seed: u32, index: u32) -> Vec2 {
-        // Hashing the index before mixing in the seed matters: with
-        // `index ^ seed`, two seeds that differ only in bits below n would
-        // feed the same inputs in another order and so give the same set.
-        // The index must not be hashed like the pattern either: with
-        // `hash(index) ^ hash(pattern)`, sample i of pattern p is sample p
-        // of pattern i, so patterns 0 and 1 of a 2-point set were the same
-        // set. `hash_combine` adds a constant to the index's hash first.
+    fn point(pattern_hash: u32, index: u32) -> Vec2 {
+        // Hashing the index before mixing in the pattern_hash matters: with
+        // `index ^ pattern_hash`, two patterns whose hashes differ only in
+        // bits below n would feed the same inputs in another order and so
+        // give the same set. The index must not be hashed like the pattern
+        // either: with `hash(index) ^ hash(pattern)`, sample i of pattern p
+        // is sample p of pattern i, so patterns 0 and 1 of a 2-point set
+        // would be the same set. `hash_combine` adds a constant to the index's hash first.
         // Both are bijections of the index, so one pattern's x bits are all
         // distinct; y hashes x's full 32 bits again with another salt.
-        let bits_x = hash_combine(seed ^ salt::JITTER_X, index);
+        let bits_x = hash_combine(pattern_hash ^ salt::JITTER_X, index);
         let bits_y = hash_u32(bits_x ^ salt::JITTER_Y);
         Vec2::new(u32_to_unit_f32(bits_x), u32_to_unit_f32(bits_y))
     }
@@ -79,13 +77,13 @@ impl Random {
 
 /// One pattern of [`Random`]: its hash.
 struct RandomKernel {
-    seed: u32,
+    pattern_hash: u32,
 }
 
 impl PointKernel for RandomKernel {
     #[inline(always)]
     fn point(&self, index: u32) -> Vec2 {
-        Random::point(self.seed, index)
+        Random::point(self.pattern_hash, index)
     }
 }
 
@@ -110,7 +108,7 @@ impl FillOn for Random {
     fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
         check_fill_len(out.len(), self.n);
         // The pattern hash once per set: three hashes per sample, not four.
-        let seed = hash_u32(pattern);
-        simd::fill_on(isa, &Pointwise(RandomKernel { seed }), 0, out);
+        let pattern_hash = hash_u32(pattern);
+        simd::fill_on(isa, &Pointwise(RandomKernel { pattern_hash }), 0, out);
     }
 }

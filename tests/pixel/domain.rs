@@ -567,3 +567,57 @@ fn a_new_pixel_sampler_plugs_in_with_two_methods() {
     let mut e = mine.start([4, 4], 3);
     assert_eq!(d.next_4d(), e.next_4d());
 }
+
+/// ZSobol's Domain draws keep its blue-noise error: on a smooth integrand,
+/// the same in every pixel, the error of each 2 x 2 quad's mean is well
+/// below that of padded Sobol's (whose four pixels are independent), as
+/// for `sample_pixel` (tests/pixel/main.rs), for the root domain's first
+/// and a later draw and for a branch.
+#[test]
+fn zsobol_domain_draws_keep_quad_error_cancellation() {
+    let exact = 0.557_746_285_351_033_f64;
+    let quad_error = |sampler: &AnyPixelSampler, spp: u32, path: &[u32], skip: u32| -> f64 {
+        let mut sum_squares = 0.0;
+        for qy in 0..32 {
+            for qx in 0..32 {
+                let mut sum = 0.0;
+                for [dx, dy] in [[0, 0], [1, 0], [0, 1], [1, 1]] {
+                    for i in 0..spp {
+                        let mut d = sampler.start([2 * qx + dx, 2 * qy + dy], i);
+                        for &k in path {
+                            d = d.branch(k);
+                        }
+                        for _ in 0..skip {
+                            d.next_2d();
+                        }
+                        let p = d.next_2d();
+                        sum += (-(p.x * p.x + p.y * p.y) as f64).exp();
+                    }
+                }
+                let error = sum / f64::from(4 * spp) - exact;
+                sum_squares += error * error;
+            }
+        }
+        (sum_squares / 1024.0).sqrt()
+    };
+    for spp in [4, 16] {
+        for frame in [0, 1] {
+            let z = PixelSamplerKind::ZSobol
+                .build(spp, [64, 64], frame)
+                .unwrap();
+            let s = PixelSamplerKind::Padded(SamplerKind::Sobol)
+                .build(spp, [64, 64], frame)
+                .unwrap();
+            for (path, skip) in [(&[][..], 0), (&[][..], 3), (&[7, 2][..], 1)] {
+                let (ez, es) = (
+                    quad_error(&z, spp, path, skip),
+                    quad_error(&s, spp, path, skip),
+                );
+                assert!(
+                    ez < 0.5 * es,
+                    "spp {spp} frame {frame} path {path:?} skip {skip}: zsobol {ez:.3e} sobol {es:.3e}"
+                );
+            }
+        }
+    }
+}

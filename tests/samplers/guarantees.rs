@@ -27,6 +27,9 @@ pub(crate) struct Guarantees {
     pub(crate) pattern_changes_set: bool,
     /// The largest `n` its constructor accepts.
     pub(crate) max_n: u32,
+    /// Its constructor also rejects an `n` whose most square grid has a
+    /// side above 2^24 (a prime above 2^24, say).
+    pub(crate) grid_sides_limited: bool,
     /// `None` when nothing is known about where points sit in their strata.
     pub(crate) offset: Option<Offset>,
     /// A whole set of `n = 2^m` points is a (0,m,2)-net in base 2.
@@ -53,6 +56,7 @@ pub(crate) const CONTRACT: Guarantees = Guarantees {
     strata: false,
     pattern_changes_set: true,
     max_n: u32::MAX,
+    grid_sides_limited: false,
     offset: None,
     net_at_powers_of_two: false,
     any_index: false,
@@ -73,9 +77,9 @@ pub(crate) fn guarantees(kind: SamplerKind) -> Guarantees {
     };
     #[rustfmt::skip]
     let g = match kind {
-        SamplerKind::Regular => Guarantees { strata: true, pattern_changes_set: false, offset: Some(Centre), ..CONTRACT },
+        SamplerKind::Regular => Guarantees { strata: true, pattern_changes_set: false, grid_sides_limited: true, offset: Some(Centre), ..CONTRACT },
         SamplerKind::Random => Guarantees { offset: Some(Uniform), ..CONTRACT },
-        SamplerKind::Jittered => Guarantees { strata: true, offset: Some(Uniform), ..CONTRACT },
+        SamplerKind::Jittered => Guarantees { strata: true, grid_sides_limited: true, offset: Some(Uniform), ..CONTRACT },
         SamplerKind::NRooks => Guarantees { latin_x: true, latin_y: true, max_n: NRooks::MAX_SAMPLES, offset: Some(Uniform), ..CONTRACT },
         SamplerKind::MultiJittered => Guarantees { latin_x: true, latin_y: true, strata: true, max_n: MultiJittered::MAX_SAMPLES, offset: Some(Uniform), ..CONTRACT },
         SamplerKind::CorrelatedMultiJittered => Guarantees { latin_x: true, latin_y: true, strata: true, max_n: CorrelatedMultiJittered::MAX_SAMPLES, offset: Some(Uniform), ..CONTRACT },
@@ -111,19 +115,20 @@ pub(crate) fn kinds_with(property: fn(&Guarantees) -> bool) -> impl Iterator<Ite
         .filter(move |&kind| property(&guarantees(kind)))
 }
 
-/// Whether `kind`'s constructor must accept `n`: `Regular` and `Jittered`
-/// take `n` when its most square grid has no side above 2^24; every other
-/// sampler takes 1 to its `max_n`.
+/// Whether `kind`'s constructor must accept `n`: 1 to its `max_n`, and
+/// with `grid_sides_limited` only when the most square grid of `n` has no
+/// side above 2^24.
 pub(crate) fn must_accept(kind: SamplerKind, n: u32) -> bool {
-    #[allow(clippy::match_same_arms)]
-    match kind {
-        SamplerKind::Regular | SamplerKind::Jittered => {
-            let columns = (1..=n.isqrt())
-                .rev()
-                .find(|d| n.is_multiple_of(*d))
-                .unwrap();
-            n / columns <= 1 << 24
-        }
-        _ => (1..=guarantees(kind).max_n).contains(&n),
+    let g = guarantees(kind);
+    if !(1..=g.max_n).contains(&n) {
+        return false;
     }
+    if g.grid_sides_limited {
+        let columns = (1..=n.isqrt())
+            .rev()
+            .find(|d| n.is_multiple_of(*d))
+            .unwrap();
+        return n / columns <= 1 << 24;
+    }
+    true
 }

@@ -147,7 +147,7 @@ pub(crate) const fn dimensions_2_3_reversed(index: u32) -> (u32, u32) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::samplers::sobol::pascal_reversed;
+    use crate::samplers::sequence::sobol::pascal_reversed;
 
     #[test]
     fn the_recurrence_gives_the_pascal_matrix_for_x_plus_1() {

@@ -22,14 +22,14 @@ pub(crate) struct OwenSeeds {
 impl OwenSeeds {
     #[inline]
     pub(crate) const fn new(pattern: u32) -> Self {
-        // Hashing each salted seed again (rather than only xoring salts in)
-        // keeps the three scrambles unrelated: Owen scrambles add the seed,
+        // Hashing each salted pattern_hash again (rather than only xoring
+        // salts in) keeps the three scrambles unrelated: Owen scrambles add the seed,
         // and seeds that differ by a fixed xor would differ predictably.
-        let seed = hash_u32(pattern);
+        let pattern_hash = hash_u32(pattern);
         Self {
-            index: hash_u32(seed ^ salt::ORDER),
-            x: hash_u32(seed ^ salt::JITTER_X),
-            y: hash_u32(seed ^ salt::JITTER_Y),
+            index: hash_u32(pattern_hash ^ salt::ORDER),
+            x: hash_u32(pattern_hash ^ salt::JITTER_X),
+            y: hash_u32(pattern_hash ^ salt::JITTER_Y),
         }
     }
 }

@@ -1,8 +1,9 @@
 use glam::Vec2;
 
+use super::{CellOffset, Grid, GridPattern, Jitter, fill_grid};
 use crate::primitives::{MAX_STRATA, Permutation, derived_key, hash_u32, salt};
-use crate::sampler::Sampler2D;
-use crate::samplers::grid::{Grid, GridPattern, Jitter};
+use crate::simd::Isa;
+use crate::traits::{FillOn, Sampler2D};
 use crate::{Error, SamplerKind};
 
 /// N-rooks (Latin hypercube) sampling: one point in every row and every
@@ -23,9 +24,7 @@ use crate::{Error, SamplerKind};
 /// Per sample: two permutations of `n` (one for columns, one for rows), two
 /// [`rand_u32`](crate::primitives::rand_u32), two fixed-point stratum
 /// conversions; no division. `sample` adds one hash of the pattern and two
-/// 5-operation key derivations. `fill` runs the same formula on 8 or 16 lanes at once (AVX2 or AVX-512,
-/// detected at run time), bit for bit equal to `sample`; measured ratios to a
-/// `rand_pcg::Pcg32` fill are in `docs/performance.md`.
+/// 5-operation key derivations.
 ///
 /// # Limits
 ///
@@ -58,8 +57,6 @@ pub struct NRooks {
     grid: Grid,
 }
 
-grid_sampler!(NRooks, fill_on);
-
 /// The statisticians' name for the same set.
 pub type LatinHypercube = NRooks;
 
@@ -79,13 +76,35 @@ impl NRooks {
 
     #[inline(always)]
     fn pattern(&self, pattern: u32) -> NRooksPattern<'_> {
-        let seed = hash_u32(pattern);
+        let pattern_hash = hash_u32(pattern);
         NRooksPattern {
             grid: &self.grid,
-            columns: Permutation::new(self.len(), derived_key(seed, salt::SHUFFLE_X)),
-            rows: Permutation::new(self.len(), derived_key(seed, salt::SHUFFLE_Y)),
-            jitter: Jitter::new(seed),
+            columns: Permutation::new(self.len(), derived_key(pattern_hash, salt::SHUFFLE_X)),
+            rows: Permutation::new(self.len(), derived_key(pattern_hash, salt::SHUFFLE_Y)),
+            jitter: Jitter::new(pattern_hash),
         }
+    }
+}
+
+impl Sampler2D for NRooks {
+    #[inline]
+    fn len(&self) -> u32 {
+        self.grid.len()
+    }
+
+    #[inline]
+    fn sample(&self, index: u32, pattern: u32) -> Vec2 {
+        self.pattern(pattern).point(index)
+    }
+
+    fn fill(&self, pattern: u32, out: &mut [Vec2]) {
+        self.fill_on(Isa::best(), pattern, out);
+    }
+}
+
+impl FillOn for NRooks {
+    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
+        fill_grid(&self.pattern(pattern), isa, out);
     }
 }
 

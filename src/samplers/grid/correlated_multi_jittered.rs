@@ -1,9 +1,9 @@
 use glam::Vec2;
 
-use crate::primitives::{Permutation, derived_key, hash_u32, salt};
-use crate::sampler::{FillOn, SMALL_TABLE, small_table};
-use crate::samplers::grid::{Grid, GridPattern, Jitter, fill_grid};
+use super::{Grid, GridPattern, Jitter, SMALL_TABLE, fill_grid, small_table};
+use crate::primitives::{MAX_STRATA, Permutation, derived_key, hash_u32, salt};
 use crate::simd::Isa;
+use crate::traits::{FillOn, Sampler2D};
 use crate::{Error, SamplerKind};
 
 /// Correlated multi-jittered sampling (Kensler 2013): multi-jitter in which
@@ -30,13 +30,8 @@ use crate::{Error, SamplerKind};
 /// then three permutations (the cells, and the two shared shuffles: a
 /// Fisher-Yates shuffle for sides up to 8), two
 /// [`rand_u32`](crate::primitives::rand_u32) and two fixed-point stratum
-/// conversions; no division, no table. Kensler's listing pays a hardware
-/// division in each of its three permutations and two more for the cell;
-/// `cargo bench --bench speed` measures the two side by side. `fill` builds the
-/// two shared shuffles once per pattern (as tables for sides 9 to 256), so a
-/// sample pays one permutation and two lookups. `fill` runs the same formula on 8 or 16 lanes at once (AVX2 or AVX-512,
-/// detected at run time), bit for bit equal to `sample`; measured ratios to a
-/// `rand_pcg::Pcg32` fill are in `docs/performance.md`.
+/// conversions; no division, no table. `fill` builds the two shared shuffles once per pattern (as tables for sides 9 to 256), so a
+/// sample pays one permutation and two lookups.
 ///
 /// # Limits
 ///
@@ -60,19 +55,56 @@ use crate::{Error, SamplerKind};
 /// # References
 ///
 /// Kensler 2013, "Correlated Multi-Jittered Sampling", Pixar Technical Memo
-/// 13-01 (`cmj`, listing 4, including the shuffle of sample order). Pattern
-/// seeds here are salted hashes rather than Kensler's `p * constant`, which
-/// collapses every seed to 0 for pattern 0.
+/// 13-01 (`cmj`, listing 4, including the shuffle of sample order). The
+/// permutation keys here are derived from a hash of the pattern rather than
+/// Kensler's `p * constant`, which is 0 for every key at pattern 0.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct CorrelatedMultiJittered {
     grid: Grid,
 }
 
-grid_constructors!(latin CorrelatedMultiJittered, CorrelatedMultiJittered, "correlated multi-jittered");
+impl CorrelatedMultiJittered {
+    /// The largest `n` accepted: 2^24, the number of distinct f32 strata.
+    pub const MAX_SAMPLES: u32 = MAX_STRATA;
 
-grid_sampler!(CorrelatedMultiJittered);
+    /// A correlated multi-jittered set of `n` points.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::ZeroSamples`] for `n = 0`; [`Error::TooManySamples`] above
+    /// [`CorrelatedMultiJittered::MAX_SAMPLES`].
+    pub fn new(n: u32) -> Result<Self, Error> {
+        Grid::latin(SamplerKind::CorrelatedMultiJittered, n).map(|grid| Self { grid })
+    }
 
-impl CorrelatedMultiJittered {}
+    /// Number of coarse grid columns.
+    #[must_use]
+    pub fn columns(&self) -> u32 {
+        self.grid.columns()
+    }
+
+    /// Number of coarse grid rows.
+    #[must_use]
+    pub fn rows(&self) -> u32 {
+        self.grid.rows()
+    }
+}
+
+impl Sampler2D for CorrelatedMultiJittered {
+    #[inline]
+    fn len(&self) -> u32 {
+        self.grid.len()
+    }
+
+    #[inline]
+    fn sample(&self, index: u32, pattern: u32) -> Vec2 {
+        self.pattern(pattern).point(index)
+    }
+
+    fn fill(&self, pattern: u32, out: &mut [Vec2]) {
+        self.fill_on(Isa::best(), pattern, out);
+    }
+}
 
 /// One pattern of [`CorrelatedMultiJittered`]: the order of the cells, the
 /// two shared shuffles (`sub_columns`: of the rows, shared by every column;
@@ -134,14 +166,14 @@ impl CorrelatedMultiJittered {
     /// pattern by three cheap derivations.
     #[inline(always)]
     fn pattern(&self, pattern: u32) -> CorrelatedMultiJitteredPattern<'_, Permutation> {
-        let seed = hash_u32(pattern);
+        let pattern_hash = hash_u32(pattern);
         let grid = &self.grid;
         CorrelatedMultiJitteredPattern {
             grid,
-            order: Permutation::new(grid.len(), derived_key(seed, salt::ORDER)),
-            sub_columns: Permutation::new(grid.rows(), derived_key(seed, salt::SHUFFLE_X)),
-            sub_rows: Permutation::new(grid.columns(), derived_key(seed, salt::SHUFFLE_Y)),
-            jitter: Jitter::new(seed),
+            order: Permutation::new(grid.len(), derived_key(pattern_hash, salt::ORDER)),
+            sub_columns: Permutation::new(grid.rows(), derived_key(pattern_hash, salt::SHUFFLE_X)),
+            sub_rows: Permutation::new(grid.columns(), derived_key(pattern_hash, salt::SHUFFLE_Y)),
+            jitter: Jitter::new(pattern_hash),
         }
     }
 }

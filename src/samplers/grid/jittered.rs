@@ -1,8 +1,9 @@
 use glam::Vec2;
 
+use super::{CellOffset, Grid, GridPattern, Jitter, fill_grid};
 use crate::primitives::{Permutation, derived_key, hash_u32, salt};
-use crate::sampler::Sampler2D;
-use crate::samplers::grid::{Grid, GridPattern, Jitter};
+use crate::simd::Isa;
+use crate::traits::{FillOn, Sampler2D};
 use crate::{Error, SamplerKind};
 
 /// One uniformly random point in each cell of a `columns x rows` grid
@@ -29,9 +30,7 @@ use crate::{Error, SamplerKind};
 /// four or five rounds of about eight integer operations), two
 /// [`rand_u32`](crate::primitives::rand_u32) for the jitter, two fixed-point
 /// stratum conversions; no division. `sample` adds one hash of the pattern and
-/// one 5-operation key derivation. `fill` runs the same formula on 8 or 16 lanes at once (AVX2 or AVX-512,
-/// detected at run time), bit for bit equal to `sample`; measured ratios to a
-/// `rand_pcg::Pcg32` fill are in `docs/performance.md`.
+/// one 5-operation key derivation.
 ///
 /// # Limits
 ///
@@ -62,30 +61,84 @@ pub struct Jittered {
     grid: Grid,
 }
 
-grid_constructors!(cells Jittered, Jittered, "jittered points");
-
-grid_sampler!(Jittered, fill_on);
-
 impl Jittered {
+    /// `n` jittered points on the most square grid that has `n` cells.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::ZeroSamples`] for `n = 0`; [`Error::GridTooFine`] when the
+    /// grid would have more than 2^24 rows (a prime above 2^24, or twice one).
+    pub fn new(n: u32) -> Result<Self, Error> {
+        Grid::most_square(SamplerKind::Jittered, n).map(|grid| Self { grid })
+    }
+
+    /// Jittered points of a `columns x rows` grid.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::ZeroGridSide`] if either side is 0; [`Error::GridTooFine`]
+    /// if a side exceeds 2^24; [`Error::TooManySamples`] if `columns * rows`
+    /// exceeds `u32::MAX`.
+    pub fn with_grid(columns: u32, rows: u32) -> Result<Self, Error> {
+        Grid::with_sides(SamplerKind::Jittered, columns, rows).map(|grid| Self { grid })
+    }
+
+    /// Number of grid columns (strata along x).
+    #[must_use]
+    pub fn columns(&self) -> u32 {
+        self.grid.columns()
+    }
+
+    /// Number of grid rows (strata along y).
+    #[must_use]
+    pub fn rows(&self) -> u32 {
+        self.grid.rows()
+    }
+
     #[inline(always)]
-    fn pattern(&self, pattern: u32) -> JitteredPattern<'_> {
-        let seed = hash_u32(pattern);
+    fn pattern(&self, pattern: u32) -> JitteredPattern<'_, Jitter> {
+        let pattern_hash = hash_u32(pattern);
         JitteredPattern {
             grid: &self.grid,
-            order: Permutation::new(self.len(), derived_key(seed, salt::ORDER)),
-            jitter: Jitter::new(seed),
+            order: Permutation::new(self.len(), derived_key(pattern_hash, salt::ORDER)),
+            offset: Jitter::new(pattern_hash),
         }
     }
 }
 
-/// One pattern of [`Jittered`]: the order of the cells and the jitter.
-struct JitteredPattern<'a> {
-    grid: &'a Grid,
-    order: Permutation,
-    jitter: Jitter,
+impl Sampler2D for Jittered {
+    #[inline]
+    fn len(&self) -> u32 {
+        self.grid.len()
+    }
+
+    #[inline]
+    fn sample(&self, index: u32, pattern: u32) -> Vec2 {
+        self.pattern(pattern).point(index)
+    }
+
+    fn fill(&self, pattern: u32, out: &mut [Vec2]) {
+        self.fill_on(Isa::best(), pattern, out);
+    }
 }
 
-impl GridPattern for JitteredPattern<'_> {
+impl FillOn for Jittered {
+    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
+        fill_grid(&self.pattern(pattern), isa, out);
+    }
+}
+
+/// One pattern of [`Jittered`] (offset [`Jitter`]) or of
+/// [`Regular`](crate::Regular) (offset [`Centre`](super::Centre)): the
+/// order in which indices visit the cells, and where in its cell each
+/// point lands.
+pub(super) struct JitteredPattern<'a, O> {
+    pub(super) grid: &'a Grid,
+    pub(super) order: Permutation,
+    pub(super) offset: O,
+}
+
+impl<O: CellOffset> GridPattern for JitteredPattern<'_, O> {
     fn grid(&self) -> &Grid {
         self.grid
     }
@@ -94,7 +147,7 @@ impl GridPattern for JitteredPattern<'_> {
     fn points<const POW2: bool, const N: usize>(&self, index: [u32; N]) -> [Vec2; N] {
         let mut out = [Vec2::ZERO; N];
         for (point, cell) in out.iter_mut().zip(self.order.apply_lanes(index)) {
-            *point = self.grid.cell_point::<POW2>(cell, self.jitter.bits(cell));
+            *point = self.grid.cell_point::<POW2>(cell, self.offset.bits(cell));
         }
         out
     }

@@ -1,8 +1,10 @@
-//! The grid core the stratified family shares ([`Regular`], [`Jittered`],
-//! [`NRooks`], [`MultiJittered`], [`CorrelatedMultiJittered`]): the
+//! The grid family ([`Regular`], [`Jittered`], [`NRooks`],
+//! [`MultiJittered`], [`CorrelatedMultiJittered`]) and its core: the
 //! `columns x rows` shape, its input checks, the lengths with their
 //! reciprocals, the cell mapping, and the loop that runs a prepared pattern
-//! over a slice. Each sampler keeps its own point formula in its own file.
+//! over a slice with the power-of-two case chosen once per call. Each
+//! sampler's file holds its constructors, its point formula and its trait
+//! impls, calling these helpers.
 //!
 //! [`Regular`]: crate::Regular
 //! [`Jittered`]: crate::Jittered
@@ -12,110 +14,39 @@
 
 use glam::Vec2;
 
+mod correlated_multi_jittered;
+mod jittered;
+mod multi_jittered;
+mod n_rooks;
+mod regular;
+
+pub use correlated_multi_jittered::CorrelatedMultiJittered;
+pub use jittered::Jittered;
+pub use multi_jittered::MultiJittered;
+pub use n_rooks::{LatinHypercube, NRooks};
+pub use regular::Regular;
+
 use crate::primitives::{InvariantDivisor, MAX_STRATA, rand_u32, salt};
-use crate::sampler::{check_fill_len, debug_check_index};
 use crate::simd::{self, Isa, Kernel};
+use crate::traits::{check_fill_len, debug_check_index};
 use crate::{Error, SamplerKind};
 
-/// Implements [`Sampler2D`](crate::Sampler2D) for the grid sampler `$name`
-/// (a struct with a `grid: Grid` field and a `pattern(pattern)` method
-/// returning its [`GridPattern`]), and with `fill_on` also the plain
-/// `FillOn` (samplers with tables write their own).
-macro_rules! grid_sampler {
-    ($name:ident) => {
-        impl $crate::Sampler2D for $name {
-            #[inline]
-            fn len(&self) -> u32 {
-                self.grid.len()
-            }
+/// Entries of the stack tables some `fill` overrides build for per-row or
+/// per-column work (1 KiB of u32 each): enough for the coarse grid of every
+/// n up to 65536, small enough for any stack.
+pub(crate) const SMALL_TABLE: usize = 256;
 
-            #[inline]
-            fn sample(&self, index: u32, pattern: u32) -> glam::Vec2 {
-                use $crate::samplers::grid::GridPattern;
-                self.pattern(pattern).point(index)
-            }
-
-            fn fill(&self, pattern: u32, out: &mut [glam::Vec2]) {
-                use $crate::sampler::FillOn;
-                self.fill_on($crate::simd::Isa::best(), pattern, out);
-            }
-        }
-    };
-    ($name:ident, fill_on) => {
-        grid_sampler!($name);
-
-        impl $crate::sampler::FillOn for $name {
-            fn fill_on(&self, isa: $crate::simd::Isa, pattern: u32, out: &mut [glam::Vec2]) {
-                $crate::samplers::grid::fill_grid(&self.pattern(pattern), isa, out);
-            }
-        }
-    };
-}
-
-/// The constructors and accessors of a grid sampler `$name` (a struct
-/// with one field `grid: Grid`) named `$kind`: `cells` for the samplers
-/// that stratify cells only (`new(n)` on the most square grid and
-/// `with_grid(columns, rows)`), `latin` for those that also cut each axis
-/// into `n` fine strata (`new(n)` and `MAX_SAMPLES`). `$what` names the
-/// points in the docs.
-macro_rules! grid_constructors {
-    (cells $name:ident, $kind:ident, $what:literal) => {
-        impl $name {
-            #[doc = concat!("`n` ", $what, " on the most square grid that has `n` cells.")]
-            ///
-            /// # Errors
-            ///
-            /// [`Error::ZeroSamples`] for `n = 0`; [`Error::GridTooFine`] when the
-            /// grid would have more than 2^24 rows (a prime above 2^24, or twice one).
-            pub fn new(n: u32) -> Result<Self, Error> {
-                Grid::most_square(SamplerKind::$kind, n).map(|grid| Self { grid })
-            }
-
-            #[doc = concat!($what, " of a `columns x rows` grid.")]
-            ///
-            /// # Errors
-            ///
-            /// [`Error::ZeroGridSide`] if either side is 0; [`Error::GridTooFine`]
-            /// if a side exceeds 2^24; [`Error::TooManySamples`] if `columns * rows`
-            /// exceeds `u32::MAX`.
-            pub fn with_grid(columns: u32, rows: u32) -> Result<Self, Error> {
-                Grid::with_sides(SamplerKind::$kind, columns, rows).map(|grid| Self { grid })
-            }
-
-            grid_constructors!(accessors);
-        }
-    };
-    (latin $name:ident, $kind:ident, $what:literal) => {
-        impl $name {
-            /// The largest `n` accepted: 2^24, the number of distinct f32 strata.
-            pub const MAX_SAMPLES: u32 = $crate::primitives::MAX_STRATA;
-
-            #[doc = concat!("A ", $what, " set of `n` points.")]
-            ///
-            /// # Errors
-            ///
-            /// [`Error::ZeroSamples`] for `n = 0`; [`Error::TooManySamples`] above
-            #[doc = concat!("[`", stringify!($name), "::MAX_SAMPLES`].")]
-            pub fn new(n: u32) -> Result<Self, Error> {
-                Grid::latin(SamplerKind::$kind, n).map(|grid| Self { grid })
-            }
-
-            grid_constructors!(accessors);
-        }
-    };
-    (accessors) => {
-        /// Number of coarse grid columns (strata along x).
-        #[must_use]
-        pub fn columns(&self) -> u32 {
-            self.grid.columns()
-        }
-
-        /// Number of coarse grid rows (strata along y).
-        #[must_use]
-        pub fn rows(&self) -> u32 {
-            self.grid.rows()
-        }
-    };
+/// `f(0), f(1), ..., f(len - 1)` in a stack table of [`SMALL_TABLE`]
+/// entries (`len <= SMALL_TABLE`), for the per-row and per-column work a
+/// `fill` hoists out of its loop.
+#[inline(always)]
+pub(crate) fn small_table(len: u32, f: impl Fn(u32) -> u32) -> [u32; SMALL_TABLE] {
+    debug_assert!(len as usize <= SMALL_TABLE);
+    let mut table = [0; SMALL_TABLE];
+    for (i, entry) in (0..len).zip(table.iter_mut()) {
+        *entry = f(i);
+    }
+    table
 }
 
 /// A `columns x rows` grid of `n = columns * rows` cells, each length
@@ -265,7 +196,7 @@ impl Grid {
         cell: [u32; N],
         (row, column): ([u32; N], [u32; N]),
         (sub_column, sub_row): ([u32; N], [u32; N]),
-        jitter: &Jitter,
+        jitter: &impl CellOffset,
     ) -> [Vec2; N] {
         let mut out = [Vec2::ZERO; N];
         for (lane, point) in out.iter_mut().enumerate() {
@@ -285,6 +216,14 @@ impl Grid {
     }
 }
 
+/// Where inside its cell or stratum a point lands: the fraction
+/// `bits / 2^32` of the way across, per coordinate, for the point keyed
+/// `key`.
+pub(crate) trait CellOffset {
+    /// The x and y fractions of the point keyed `key`, in 0.32 fixed point.
+    fn bits(&self, key: u32) -> (u32, u32);
+}
+
 /// The two jitter seeds of one pattern: where inside its stratum each
 /// coordinate of a point lands, as 32 random bits per coordinate from
 /// [`rand_u32`] (Kensler 2013's `randfloat` hash).
@@ -295,19 +234,32 @@ pub(crate) struct Jitter {
 }
 
 impl Jitter {
-    /// The jitter seeds of the pattern whose hash is `seed`.
+    /// The jitter seeds of the pattern whose hash is `pattern_hash`.
     #[inline(always)]
-    pub(crate) const fn new(seed: u32) -> Self {
+    pub(crate) const fn new(pattern_hash: u32) -> Self {
         Self {
-            x: seed ^ salt::JITTER_X,
-            y: seed ^ salt::JITTER_Y,
+            x: pattern_hash ^ salt::JITTER_X,
+            y: pattern_hash ^ salt::JITTER_Y,
         }
     }
+}
 
-    /// Random bits for the x and y offsets of the point keyed `key`.
+impl CellOffset for Jitter {
     #[inline(always)]
-    pub(crate) const fn bits(&self, key: u32) -> (u32, u32) {
+    fn bits(&self, key: u32) -> (u32, u32) {
         (rand_u32(key, self.x), rand_u32(key, self.y))
+    }
+}
+
+/// The offset of [`Regular`]: half-way bits put every point at its cell's
+/// centre, to within `2^-24`.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Centre;
+
+impl CellOffset for Centre {
+    #[inline(always)]
+    fn bits(&self, _key: u32) -> (u32, u32) {
+        (1 << 31, 1 << 31)
     }
 }
 
@@ -323,7 +275,7 @@ pub(crate) fn most_square_sides(n: u32) -> (u32, u32) {
 }
 
 /// One pattern of a grid sampler with its per-pattern work done (the
-/// pattern hash, its permutations, tables): what `sample` and `fill` share,
+/// `pattern_hash`, its permutations, tables): what `sample` and `fill` share,
 /// so that the two cannot differ.
 pub(crate) trait GridPattern {
     /// The sampler's grid.

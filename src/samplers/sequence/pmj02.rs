@@ -1,10 +1,11 @@
 use glam::Vec2;
 
+use super::digital::{DigitalSequence, OwenSeeds, scrambled_bits, sequence_kernel};
+use super::{fill_run, fill_set, set_size};
 use crate::Error;
 use crate::primitives::owen_scramble;
-use crate::sampler::Sampler2D;
-use crate::samplers::digital::{DigitalSequence, OwenSeeds, scrambled_bits, sequence_kernel};
-use crate::simd::Kernel;
+use crate::simd::{Isa, Kernel};
+use crate::traits::{FillOn, Sampler2D, Sequence2D};
 
 /// Progressive multi-jittered (0,2) sequence (pmj02, Christensen, Kensler &
 /// Kilpatrick 2018), generated in O(1) per sample with no tables.
@@ -55,9 +56,7 @@ use crate::simd::Kernel;
 ///
 /// As [`Sobol`] (three Owen-scramble hashes, four bit reversals) with about
 /// twenty shift/mask/xor operations for the two generator matrices in place of
-/// Sobol's fifteen: no loop, no table, no division. `fill` runs the same formula on 8 or 16 lanes at once (AVX2 or AVX-512,
-/// detected at run time), bit for bit equal to `sample`; measured ratios to a
-/// `rand_pcg::Pcg32` fill are in `docs/performance.md`.
+/// Sobol's fifteen: no loop, no table, no division.
 ///
 /// # Limits
 ///
@@ -99,13 +98,68 @@ pub struct Pmj02 {
     n: u32,
 }
 
-sequence_sampler!(Pmj02, "pmj02");
-
 impl Pmj02 {
+    /// The pmj02 sequence, with `n` as the set size for
+    /// [`fill`](Sampler2D::fill) and the tools.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::ZeroSamples`] for `n = 0`.
+    pub fn new(n: u32) -> Result<Self, Error> {
+        set_size(n).map(|n| Self { n })
+    }
+
+    /// The sequence with no set size: every index in `0..2^32` is valid and
+    /// [`len`](Sampler2D::len) is `u32::MAX`, so `fill` writes any prefix.
+    /// The same points as `Pmj02::new(n)` for every `n`; use it with
+    /// [`fill_from`](Sequence2D::fill_from) for progressive rendering.
+    ///
+    /// ```
+    /// use wellspread::{Pmj02, Sampler2D};
+    /// assert_eq!(Pmj02::unbounded().sample(1000, 3), Pmj02::new(16)?.sample(1000, 3));
+    /// # Ok::<(), wellspread::Error>(())
+    /// ```
+    #[must_use]
+    pub const fn unbounded() -> Self {
+        Self { n: u32::MAX }
+    }
+
     /// The points of pattern `pattern`, as a lane kernel.
     #[inline(always)]
     fn kernel(pattern: u32) -> impl Kernel {
         sequence_kernel::<Self>(OwenSeeds::new(pattern))
+    }
+}
+
+impl Sampler2D for Pmj02 {
+    #[inline]
+    fn len(&self) -> u32 {
+        self.n
+    }
+
+    /// Sample `index` of pattern `pattern`; every `index` below `2^32` is
+    /// valid, including those at or above [`len`](Sampler2D::len).
+    #[inline]
+    fn sample(&self, index: u32, pattern: u32) -> Vec2 {
+        Self::kernel(pattern).points([index])[0]
+    }
+
+    #[inline]
+    fn fill(&self, pattern: u32, out: &mut [Vec2]) {
+        self.fill_on(Isa::best(), pattern, out);
+    }
+}
+
+impl Sequence2D for Pmj02 {
+    #[inline]
+    fn fill_from(&self, start: u32, pattern: u32, out: &mut [Vec2]) {
+        fill_run(&Self::kernel(pattern), start, out);
+    }
+}
+
+impl FillOn for Pmj02 {
+    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
+        fill_set(isa, &Self::kernel(pattern), self.n, out);
     }
 }
 
@@ -192,7 +246,7 @@ mod tests {
 
     #[test]
     fn pmj02_is_a_02_sequence_up_to_2_to_the_32() {
-        assert!(crate::samplers::digital::tests::is_02_sequence(
+        assert!(crate::samplers::sequence::digital::tests::is_02_sequence(
             |j| stirling_x(1 << j),
             |j| stirling_y(1 << j),
         ));

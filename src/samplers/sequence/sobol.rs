@@ -1,10 +1,11 @@
 use glam::Vec2;
 
+use super::digital::{DigitalSequence, OwenSeeds, scrambled_bits, sequence_kernel};
+use super::{fill_run, fill_set, set_size};
 use crate::Error;
 use crate::primitives::owen_scramble;
-use crate::sampler::Sampler2D;
-use crate::samplers::digital::{DigitalSequence, OwenSeeds, scrambled_bits, sequence_kernel};
-use crate::simd::Kernel;
+use crate::simd::{Isa, Kernel};
+use crate::traits::{FillOn, Sampler2D, Sequence2D};
 
 /// The first two dimensions of the Sobol sequence, Owen-scrambled with
 /// Burley's hash and shuffled: a randomised base-2 (0,2)-sequence.
@@ -51,13 +52,7 @@ use crate::simd::Kernel;
 /// Four [`hash_u32`](crate::primitives::hash_u32) of the pattern (once per
 /// [`fill`](Sampler2D::fill)), then per sample three Owen-scramble hashes of
 /// four multiply-xor steps, four bit reversals and five xor-shift steps: no
-/// loop, no table, no division, about 160 x86-64 instructions for `sample`.
-/// `sobol_burley::sample`, called once per dimension, shuffles the index and
-/// hashes the seed per dimension and loops over the set bits of a 16-bit index
-/// through a direction-number table (so it accepts indices below 2^16 only).
-/// `fill` runs the same formula on 8 or 16 lanes at once (AVX2 or AVX-512,
-/// detected at run time), bit for bit equal to `sample`; measured ratios to a
-/// `rand_pcg::Pcg32` fill are in `docs/performance.md`.
+/// loop, no table, no division.
 ///
 /// # Limits
 ///
@@ -117,13 +112,68 @@ pub struct Sobol {
     n: u32,
 }
 
-sequence_sampler!(Sobol, "Owen-scrambled Sobol");
-
 impl Sobol {
+    /// The Owen-scrambled Sobol sequence, with `n` as the set size for
+    /// [`fill`](Sampler2D::fill) and the tools.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::ZeroSamples`] for `n = 0`.
+    pub fn new(n: u32) -> Result<Self, Error> {
+        set_size(n).map(|n| Self { n })
+    }
+
+    /// The sequence with no set size: every index in `0..2^32` is valid and
+    /// [`len`](Sampler2D::len) is `u32::MAX`, so `fill` writes any prefix.
+    /// The same points as `Sobol::new(n)` for every `n`; use it with
+    /// [`fill_from`](Sequence2D::fill_from) for progressive rendering.
+    ///
+    /// ```
+    /// use wellspread::{Sobol, Sampler2D};
+    /// assert_eq!(Sobol::unbounded().sample(1000, 3), Sobol::new(16)?.sample(1000, 3));
+    /// # Ok::<(), wellspread::Error>(())
+    /// ```
+    #[must_use]
+    pub const fn unbounded() -> Self {
+        Self { n: u32::MAX }
+    }
+
     /// The points of pattern `pattern`, as a lane kernel.
     #[inline(always)]
     fn kernel(pattern: u32) -> impl Kernel {
         sequence_kernel::<Self>(OwenSeeds::new(pattern))
+    }
+}
+
+impl Sampler2D for Sobol {
+    #[inline]
+    fn len(&self) -> u32 {
+        self.n
+    }
+
+    /// Sample `index` of pattern `pattern`; every `index` below `2^32` is
+    /// valid, including those at or above [`len`](Sampler2D::len).
+    #[inline]
+    fn sample(&self, index: u32, pattern: u32) -> Vec2 {
+        Self::kernel(pattern).points([index])[0]
+    }
+
+    #[inline]
+    fn fill(&self, pattern: u32, out: &mut [Vec2]) {
+        self.fill_on(Isa::best(), pattern, out);
+    }
+}
+
+impl Sequence2D for Sobol {
+    #[inline]
+    fn fill_from(&self, start: u32, pattern: u32, out: &mut [Vec2]) {
+        fill_run(&Self::kernel(pattern), start, out);
+    }
+}
+
+impl FillOn for Sobol {
+    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
+        fill_set(isa, &Self::kernel(pattern), self.n, out);
     }
 }
 
@@ -163,7 +213,7 @@ impl DigitalSequence for Sobol {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::samplers::digital::tests::is_02_sequence;
+    use crate::samplers::sequence::digital::tests::is_02_sequence;
 
     #[test]
     fn sobol_is_a_02_sequence_up_to_2_to_the_32() {

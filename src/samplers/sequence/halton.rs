@@ -1,11 +1,12 @@
 use glam::Vec2;
 
+use super::{fill_run, fill_set, set_size};
 use crate::Error;
 use crate::primitives::{
     hash_combine, hash_u32, owen_scramble_reversed, salt, stratum_to_unit_f32, u32_to_unit_f32,
 };
-use crate::sampler::Sampler2D;
-use crate::simd::Kernel;
+use crate::simd::{Isa, Kernel};
+use crate::traits::{FillOn, Sampler2D, Sequence2D};
 
 /// Base-3 digits scrambled per sample: `3^15 = 14_348_907` strata, the most
 /// that fit in the `2^24` f32 strata of `[0, 1)`.
@@ -46,9 +47,7 @@ const BASE3_STRATA: u32 = 14_348_907;
 /// One Owen-scramble hash for x; for y, fifteen rounds of a divide by 3 (a
 /// multiply) and one independent [`hash_u32`], then two more hashes for the
 /// low digits and a fixed-point stratum conversion: about three times
-/// [`Sobol`](crate::Sobol)'s operations. `fill` runs the same formula on 8 or 16 lanes at once (AVX2 or AVX-512,
-/// detected at run time), bit for bit equal to `sample`; measured ratios to a
-/// `rand_pcg::Pcg32` fill are in `docs/performance.md`.
+/// [`Sobol`](crate::Sobol)'s operations.
 ///
 /// # Limits
 ///
@@ -93,13 +92,68 @@ pub struct Halton {
     n: u32,
 }
 
-sequence_sampler!(Halton, "scrambled Halton");
-
 impl Halton {
+    /// The scrambled Halton sequence, with `n` as the set size for
+    /// [`fill`](Sampler2D::fill) and the tools.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::ZeroSamples`] for `n = 0`.
+    pub fn new(n: u32) -> Result<Self, Error> {
+        set_size(n).map(|n| Self { n })
+    }
+
+    /// The sequence with no set size: every index in `0..2^32` is valid and
+    /// [`len`](Sampler2D::len) is `u32::MAX`, so `fill` writes any prefix.
+    /// The same points as `Halton::new(n)` for every `n`; use it with
+    /// [`fill_from`](Sequence2D::fill_from) for progressive rendering.
+    ///
+    /// ```
+    /// use wellspread::{Halton, Sampler2D};
+    /// assert_eq!(Halton::unbounded().sample(1000, 3), Halton::new(16)?.sample(1000, 3));
+    /// # Ok::<(), wellspread::Error>(())
+    /// ```
+    #[must_use]
+    pub const fn unbounded() -> Self {
+        Self { n: u32::MAX }
+    }
+
     /// The points of pattern `pattern`, as a lane kernel.
     #[inline(always)]
     fn kernel(pattern: u32) -> impl Kernel {
         HaltonSeeds::new(pattern)
+    }
+}
+
+impl Sampler2D for Halton {
+    #[inline]
+    fn len(&self) -> u32 {
+        self.n
+    }
+
+    /// Sample `index` of pattern `pattern`; every `index` below `2^32` is
+    /// valid, including those at or above [`len`](Sampler2D::len).
+    #[inline]
+    fn sample(&self, index: u32, pattern: u32) -> Vec2 {
+        Self::kernel(pattern).points([index])[0]
+    }
+
+    #[inline]
+    fn fill(&self, pattern: u32, out: &mut [Vec2]) {
+        self.fill_on(Isa::best(), pattern, out);
+    }
+}
+
+impl Sequence2D for Halton {
+    #[inline]
+    fn fill_from(&self, start: u32, pattern: u32, out: &mut [Vec2]) {
+        fill_run(&Self::kernel(pattern), start, out);
+    }
+}
+
+impl FillOn for Halton {
+    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
+        fill_set(isa, &Self::kernel(pattern), self.n, out);
     }
 }
 
@@ -112,10 +166,10 @@ struct HaltonSeeds {
 impl HaltonSeeds {
     #[inline]
     const fn new(pattern: u32) -> Self {
-        let seed = hash_u32(pattern);
+        let pattern_hash = hash_u32(pattern);
         Self {
-            x: hash_u32(seed ^ salt::JITTER_X),
-            y: hash_u32(seed ^ salt::JITTER_Y),
+            x: hash_u32(pattern_hash ^ salt::JITTER_X),
+            y: hash_u32(pattern_hash ^ salt::JITTER_Y),
         }
     }
 }

@@ -1,9 +1,9 @@
 use glam::Vec2;
 
-use crate::primitives::{Permutation, derived_key, hash_u32, salt};
-use crate::sampler::{FillOn, SMALL_TABLE, Sampler2D};
-use crate::samplers::grid::{Grid, GridPattern, Jitter, fill_grid};
+use super::{Grid, GridPattern, Jitter, SMALL_TABLE, fill_grid};
+use crate::primitives::{MAX_STRATA, Permutation, derived_key, hash_u32, salt};
 use crate::simd::Isa;
+use crate::traits::{FillOn, Sampler2D};
 use crate::{Error, SamplerKind};
 
 /// Multi-jittered sampling: jittered on a coarse `columns x rows` grid and
@@ -30,9 +30,7 @@ use crate::{Error, SamplerKind};
 /// [`rand_u32`](crate::primitives::rand_u32), two fixed-point stratum
 /// conversions; no division. `fill` builds the `columns + rows` line shuffles
 /// once per pattern (for sides up to 256), so a sample pays three
-/// permutation lookups. `fill` runs the same formula on 8 or 16 lanes at once (AVX2 or AVX-512,
-/// detected at run time), bit for bit equal to `sample`; measured ratios to a
-/// `rand_pcg::Pcg32` fill are in `docs/performance.md`.
+/// permutation lookups.
 ///
 /// # Limits
 ///
@@ -62,17 +60,54 @@ use crate::{Error, SamplerKind};
 ///
 /// Chiu, Shirley & Wang 1994, "Multi-jittered sampling", Graphics Gems IV.
 /// Random access replaces their table shuffles with Kensler's (2013) hashed
-/// permutations: column `c`'s shuffle is `permute(_, rows, hash(seed, c))`.
+/// permutations: column `c`'s shuffle is `permute(_, rows, hash(pattern_hash, c))`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct MultiJittered {
     grid: Grid,
 }
 
-grid_constructors!(latin MultiJittered, MultiJittered, "multi-jittered");
+impl MultiJittered {
+    /// The largest `n` accepted: 2^24, the number of distinct f32 strata.
+    pub const MAX_SAMPLES: u32 = MAX_STRATA;
 
-grid_sampler!(MultiJittered);
+    /// A multi-jittered set of `n` points.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::ZeroSamples`] for `n = 0`; [`Error::TooManySamples`] above
+    /// [`MultiJittered::MAX_SAMPLES`].
+    pub fn new(n: u32) -> Result<Self, Error> {
+        Grid::latin(SamplerKind::MultiJittered, n).map(|grid| Self { grid })
+    }
 
-impl MultiJittered {}
+    /// Number of coarse grid columns.
+    #[must_use]
+    pub fn columns(&self) -> u32 {
+        self.grid.columns()
+    }
+
+    /// Number of coarse grid rows.
+    #[must_use]
+    pub fn rows(&self) -> u32 {
+        self.grid.rows()
+    }
+}
+
+impl Sampler2D for MultiJittered {
+    #[inline]
+    fn len(&self) -> u32 {
+        self.grid.len()
+    }
+
+    #[inline]
+    fn sample(&self, index: u32, pattern: u32) -> Vec2 {
+        self.pattern(pattern).point(index)
+    }
+
+    fn fill(&self, pattern: u32, out: &mut [Vec2]) {
+        self.fill_on(Isa::best(), pattern, out);
+    }
+}
 
 /// One pattern of [`MultiJittered`]: the order of the cells, each coarse
 /// column's shuffle of its sub-columns and each coarse row's shuffle of its
@@ -190,17 +225,17 @@ const fn line_key(seed: u32, line: u32) -> u32 {
 impl MultiJittered {
     #[inline(always)]
     fn pattern(&self, pattern: u32) -> MultiJitteredPattern<'_, HashedLines> {
-        let seed = hash_u32(pattern);
+        let pattern_hash = hash_u32(pattern);
         MultiJitteredPattern {
             grid: &self.grid,
-            order: Permutation::new(self.len(), derived_key(seed, salt::ORDER)),
+            order: Permutation::new(self.len(), derived_key(pattern_hash, salt::ORDER)),
             shuffles: HashedLines {
                 columns: self.grid.columns(),
                 rows: self.grid.rows(),
-                seed_x: seed ^ salt::SHUFFLE_X,
-                seed_y: seed ^ salt::SHUFFLE_Y,
+                seed_x: pattern_hash ^ salt::SHUFFLE_X,
+                seed_y: pattern_hash ^ salt::SHUFFLE_Y,
             },
-            jitter: Jitter::new(seed),
+            jitter: Jitter::new(pattern_hash),
         }
     }
 }

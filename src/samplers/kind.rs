@@ -1,0 +1,270 @@
+//! [`SamplerKind`] and [`AnySampler`]: choosing a sampler by name at run
+//! time (tools, settings files, command lines), from the one registry
+//! table `sampler_kinds!`, and the `serde` impls of `SamplerKind`.
+
+use core::fmt;
+use core::str::FromStr;
+
+use glam::Vec2;
+
+use super::{
+    CorrelatedMultiJittered, Halton, Hammersley, Jittered, MultiJittered, NRooks, Pmj02, Random,
+    Regular, Sobol,
+};
+use crate::simd::Isa;
+use crate::traits::{FillOn, Sequence2D};
+use crate::{Error, Sampler2D};
+
+/// Declares the sampler list once: the kind enum, its names, the dispatching
+/// enum and its `Sampler2D` impl all come from this one table.
+macro_rules! sampler_kinds {
+    ($($variant:ident => $name:literal,)*) => {
+        /// The kinds of [`Sampler2D`] wellspread offers, named as the tools
+        /// name them. The pixel samplers ([`ZSobol`](crate::ZSobol),
+        /// [`Padded`](crate::Padded)) are not sampler kinds: they implement
+        /// [`PixelSampler`](crate::PixelSampler) instead.
+        ///
+        /// ```
+        /// use wellspread::{SamplerKind, Sampler2D};
+        /// let kind: SamplerKind = "multi-jittered".parse()?;
+        /// let sampler = kind.build(64)?;
+        /// assert_eq!(sampler.len(), 64);
+        /// assert_eq!(kind.name(), "multi-jittered");
+        /// # Ok::<(), Box<dyn std::error::Error>>(())
+        /// ```
+        ///
+        /// Not `#[non_exhaustive]`, on purpose: a `match` over the kinds, in
+        /// this crate or its tests and tools, fails to compile until a new
+        /// kind has its line (a new kind is a new minor version).
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+        pub enum SamplerKind {
+            $(
+                #[doc = concat!("[`", stringify!($variant), "`], named `", $name, "`.")]
+                $variant,
+            )*
+        }
+
+        impl SamplerKind {
+            /// All kinds, in the order tools list them: from the baseline
+            /// to the best distributed.
+            pub const ALL: &'static [SamplerKind] = &[$(SamplerKind::$variant,)*];
+
+            /// The kebab-case name the tools use (`"n-rooks"`, ...).
+            #[must_use]
+            pub const fn name(self) -> &'static str {
+                match self {
+                    $(SamplerKind::$variant => $name,)*
+                }
+            }
+
+            /// The sampler of this kind for `n` samples, through its checked
+            /// constructor.
+            ///
+            /// # Errors
+            ///
+            /// Whatever that constructor rejects (`n = 0`, too large an `n`).
+            pub fn build(self, n: u32) -> Result<AnySampler, Error> {
+                Ok(match self {
+                    $(SamplerKind::$variant => AnySampler::$variant($variant::new(n)?),)*
+                })
+            }
+        }
+
+        /// Any one of wellspread's samplers, chosen at run time, with static
+        /// dispatch (a `match`, no allocation).
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+        pub enum AnySampler {
+            $(
+                #[doc = concat!("A [`", stringify!($variant), "`].")]
+                $variant($variant),
+            )*
+        }
+
+        impl AnySampler {
+            /// Which kind of sampler this is.
+            #[must_use]
+            pub const fn kind(&self) -> SamplerKind {
+                match self {
+                    $(AnySampler::$variant(_) => SamplerKind::$variant,)*
+                }
+            }
+        }
+
+        impl Sampler2D for AnySampler {
+            #[inline]
+            fn len(&self) -> u32 {
+                match self {
+                    $(AnySampler::$variant(s) => s.len(),)*
+                }
+            }
+
+            #[inline]
+            fn sample(&self, index: u32, pattern: u32) -> Vec2 {
+                match self {
+                    $(AnySampler::$variant(s) => s.sample(index, pattern),)*
+                }
+            }
+
+            #[inline]
+            fn fill(&self, pattern: u32, out: &mut [Vec2]) {
+                match self {
+                    $(AnySampler::$variant(s) => s.fill(pattern, out),)*
+                }
+            }
+        }
+
+        impl FillOn for AnySampler {
+            fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
+                match self {
+                    $(AnySampler::$variant(s) => s.fill_on(isa, pattern, out),)*
+                }
+            }
+        }
+    };
+}
+
+sampler_kinds! {
+    Regular => "regular",
+    Random => "random",
+    Jittered => "jittered",
+    NRooks => "n-rooks",
+    MultiJittered => "multi-jittered",
+    CorrelatedMultiJittered => "correlated-multi-jittered",
+    Hammersley => "hammersley",
+    Halton => "halton",
+    Sobol => "sobol",
+    Pmj02 => "pmj02",
+}
+
+impl AnySampler {
+    /// The sampler as a progressive [`Sequence2D`], if it is one (Sobol,
+    /// Pmj02, Halton): the way to its
+    /// [`fill_from`](Sequence2D::fill_from) at run time.
+    ///
+    /// ```
+    /// use wellspread::SamplerKind;
+    /// assert!(SamplerKind::Sobol.build(16)?.as_sequence().is_some());
+    /// assert!(SamplerKind::Hammersley.build(16)?.as_sequence().is_none());
+    /// # Ok::<(), wellspread::Error>(())
+    /// ```
+    #[must_use]
+    pub fn as_sequence(&self) -> Option<&dyn Sequence2D> {
+        match self {
+            AnySampler::Halton(s) => Some(s),
+            AnySampler::Sobol(s) => Some(s),
+            AnySampler::Pmj02(s) => Some(s),
+            AnySampler::Regular(_)
+            | AnySampler::Random(_)
+            | AnySampler::Jittered(_)
+            | AnySampler::NRooks(_)
+            | AnySampler::MultiJittered(_)
+            | AnySampler::CorrelatedMultiJittered(_)
+            | AnySampler::Hammersley(_) => None,
+        }
+    }
+}
+
+impl fmt::Display for SamplerKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for SamplerKind {
+    type Err = Error;
+
+    /// The kind named `name` (exactly, as [`SamplerKind::name`] spells it).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::UnknownSampler`], which names the input and lists the
+    /// valid names.
+    fn from_str(name: &str) -> Result<Self, Self::Err> {
+        SamplerKind::ALL
+            .iter()
+            .copied()
+            .find(|kind| kind.name() == name)
+            .ok_or(Error::UnknownSampler {
+                name: crate::error::InputText::new(name),
+            })
+    }
+}
+
+/// `SamplerKind` in settings files (feature `serde`): serialized as its
+/// kebab-case [`name`](SamplerKind::name), deserialized from it with the
+/// same error as [`FromStr`].
+#[cfg(feature = "serde")]
+mod serde_impls {
+    use core::fmt;
+
+    use serde::de::{self, Deserialize, Deserializer, Visitor};
+    use serde::ser::{Serialize, Serializer};
+
+    use super::SamplerKind;
+
+    impl Serialize for SamplerKind {
+        fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+            serializer.serialize_str(self.name())
+        }
+    }
+
+    impl<'de> Deserialize<'de> for SamplerKind {
+        fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+            struct Name;
+            impl Visitor<'_> for Name {
+                type Value = SamplerKind;
+
+                fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                    f.write_str("a sampler name such as \"sobol\" or \"n-rooks\"")
+                }
+
+                fn visit_str<E: de::Error>(self, name: &str) -> Result<SamplerKind, E> {
+                    name.parse().map_err(E::custom)
+                }
+            }
+            deserializer.deserialize_str(Name)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_sequences_are_sobol_pmj02_and_halton() {
+        let sequences: std::vec::Vec<SamplerKind> = SamplerKind::ALL
+            .iter()
+            .copied()
+            .filter(|kind| kind.build(16).unwrap().as_sequence().is_some())
+            .collect();
+        assert_eq!(
+            sequences,
+            [SamplerKind::Halton, SamplerKind::Sobol, SamplerKind::Pmj02]
+        );
+    }
+
+    #[test]
+    fn every_sequence_fills_any_run_as_it_samples() {
+        for &kind in SamplerKind::ALL {
+            let sampler = kind.build(16).unwrap();
+            let Some(sequence) = sampler.as_sequence() else {
+                continue;
+            };
+            // Runs past the set size, across 2^24, and up to the last index.
+            for start in [0, 5, 16, (1 << 24) - 3, u32::MAX - 20] {
+                let mut out = [Vec2::NAN; 21];
+                sequence.fill_from(start, 7, &mut out);
+                for (offset, point) in (0..).zip(&out) {
+                    let expected = sequence.sample(start + offset, 7);
+                    assert_eq!(
+                        (point.x.to_bits(), point.y.to_bits()),
+                        (expected.x.to_bits(), expected.y.to_bits()),
+                        "{kind} index {}",
+                        start + offset
+                    );
+                }
+            }
+        }
+    }
+}

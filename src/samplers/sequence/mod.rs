@@ -1,0 +1,52 @@
+//! The progressive sequences ([`Sobol`], [`Pmj02`], [`Halton`]) and what
+//! they share apart from their point formulas: a set size that only bounds
+//! `fill`, and the checked runs of `fill` and
+//! [`fill_from`](crate::Sequence2D::fill_from). Each sampler's file supplies
+//! `kernel(pattern)`, its points as a [`Kernel`]; `sample` and every `fill`
+//! path run that one kernel.
+//!
+//! [`Sobol`]: crate::Sobol
+//! [`Pmj02`]: crate::Pmj02
+//! [`Halton`]: crate::Halton
+
+pub(crate) mod digital;
+mod halton;
+pub(crate) mod pmj02;
+pub(crate) mod sobol;
+pub(crate) mod sobol_4d;
+
+pub use halton::Halton;
+pub use pmj02::Pmj02;
+pub use sobol::Sobol;
+
+use glam::Vec2;
+
+use crate::Error;
+use crate::simd::{self, Isa, Kernel};
+use crate::traits::{check_fill_from, check_fill_len};
+
+/// The set size of a sequence's `new(n)`: any `n >= 1`.
+#[inline]
+pub(crate) const fn set_size(n: u32) -> Result<u32, Error> {
+    if n == 0 {
+        Err(Error::ZeroSamples)
+    } else {
+        Ok(n)
+    }
+}
+
+/// `fill` of a sequence of set size `len` on `isa`: points `0..out.len()`
+/// of `kernel`, which must not exceed the set.
+#[inline]
+pub(crate) fn fill_set<K: Kernel>(isa: Isa, kernel: &K, len: u32, out: &mut [Vec2]) {
+    check_fill_len(out.len(), len);
+    simd::fill_on(isa, kernel, 0, out);
+}
+
+/// `fill_from` of a sequence: points `start..start + out.len()` of
+/// `kernel`, which must not run past index `u32::MAX`.
+#[inline]
+pub(crate) fn fill_run<K: Kernel>(kernel: &K, start: u32, out: &mut [Vec2]) {
+    check_fill_from(start, out.len());
+    simd::fill_on(Isa::best(), kernel, start, out);
+}
