@@ -102,7 +102,8 @@ fn turn_fraction(x: f32, y: f32) -> f32 {
 /// # Cost
 ///
 /// One division, one `sin` and one `cos` (libm), a few multiplies; no
-/// square root.
+/// square root. About 70 x86-64 instructions a call (callgrind, release
+/// build), most of them libm's `sincosf`.
 ///
 /// # Examples
 ///
@@ -208,11 +209,13 @@ pub fn concentric_disk_inverse(p: Vec2) -> Vec2 {
 ///   projected solid angle: what the concentric map keeps, this keeps.
 /// - `z >= 0` always; `|v| = 1` within 2^-22 (tested at the square's edges
 ///   and over random inputs). The rim `z = 0` is reached at the square's
-///   boundary (`u.x = 0`, or `u.y = 0`).
+///   boundary (`u.x = 0`, or `u.y = 0`), where the pdf is 0: an estimator
+///   should use the cancelled weight (`f cos / pdf = pi f`), not divide by
+///   the pdf.
 ///
 /// # Cost
 ///
-/// [`concentric_disk`] and one square root.
+/// [`concentric_disk`] and one square root: about 80 x86-64 instructions.
 ///
 /// # Examples
 ///
@@ -288,7 +291,8 @@ pub fn cosine_hemisphere_inverse(v: Vec3) -> Vec2 {
 ///
 /// # Cost
 ///
-/// One square root, one `sin` and one `cos` (libm).
+/// One square root, one `sin` and one `cos` (libm): about 70 x86-64
+/// instructions.
 ///
 /// # Examples
 ///
@@ -364,7 +368,8 @@ pub fn uniform_hemisphere_inverse(v: Vec3) -> Vec2 {
 ///
 /// # Cost
 ///
-/// One square root, one `sin` and one `cos` (libm).
+/// One square root, one `sin` and one `cos` (libm): about 65 x86-64
+/// instructions.
 ///
 /// # Examples
 ///
@@ -446,7 +451,8 @@ pub fn uniform_sphere_inverse(v: Vec3) -> Vec2 {
 ///
 /// # Cost
 ///
-/// One comparison, two multiplies, two subtractions: no square root.
+/// One comparison, two multiplies, two subtractions: no square root, a
+/// handful of instructions.
 ///
 /// # Examples
 ///
@@ -539,7 +545,10 @@ pub fn uniform_triangle_inverse(b: Vec3) -> Vec2 {
 ///   2^24.
 /// - The remapped `u` is in `[0, 1)`: it is rounded to f32 and clamped to
 ///   [`ONE_MINUS_EPSILON`]; it is 0 at the left edge of each choice's
-///   interval and monotone inside it.
+///   interval and monotone inside it. When the `u` of a pixel's `2^m`
+///   samples are one per interval of `2^-m` (a sequence's 1D draws) and
+///   `n = 2^k <= 2^m`, each choice's `2^(m-k)` remapped values are one per
+///   interval of `2^-(m-k)`: the reuse keeps the strata.
 ///
 /// # Limits
 ///
@@ -557,7 +566,7 @@ pub fn uniform_triangle_inverse(b: Vec3) -> Vec2 {
 /// # Cost
 ///
 /// A 24 x 32-bit integer multiply, two shifts and one int-to-float
-/// conversion; no division.
+/// conversion; no division. About 25 x86-64 instructions.
 ///
 /// # Examples
 ///

@@ -402,6 +402,29 @@ fn discrete_with_no_choice_panics_in_debug() {
 }
 
 #[test]
+fn discrete_remapped_values_keep_the_finer_strata() {
+    // 2^12 Sobol x coordinates, 2^k choices: within each choice the 2^(12-k)
+    // remapped values are one per interval of 2^-(12-k), so reusing them
+    // (a point on the chosen light) is still stratified.
+    let sobol = Sobol::new(1 << 12).unwrap();
+    for pattern in [0, 5, 0xffff_ffff] {
+        for k in [1u32, 3, 6] {
+            let per_choice = 1usize << (12 - k);
+            let mut seen = vec![vec![false; per_choice]; 1 << k];
+            for i in 0..1 << 12 {
+                let (choice, remapped) = discrete(sobol.sample(i, pattern).x, 1 << k);
+                let stratum = (remapped * per_choice as f32) as usize;
+                assert!(
+                    !seen[choice as usize][stratum],
+                    "k = {k}, choice {choice}, stratum {stratum}"
+                );
+                seen[choice as usize][stratum] = true;
+            }
+        }
+    }
+}
+
+#[test]
 fn discrete_keeps_one_dimensional_strata() {
     // 2^m Sobol x coordinates are one per interval of 2^-m: every power of
     // two n <= 2^m gets exactly 2^m / n, and any n within 2 of 2^m / n.

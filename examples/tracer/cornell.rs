@@ -42,8 +42,7 @@ use wellspread::glam::{Vec2, Vec3, Vec4};
 use wellspread::primitives::hash_combine;
 use wellspread::warp;
 
-/// Linear RGB.
-pub type Rgb = [f32; 3];
+use crate::scenes::Rgb;
 
 /// The key of the per-bounce branch: bounce `b` draws from
 /// `root.branch(BOUNCE).branch(b)`.
@@ -622,7 +621,10 @@ fn trace<S: PathSamples>(scene: &Scene, mut ray: Ray, root: &S) -> PathResult {
                     (-hit.normal, ior, -cos)
                 };
                 // The Fresnel coin: reflect with probability F, so the
-                // weight F / F (or (1 - F) / (1 - F)) is 1.
+                // weight F / F (or (1 - F) / (1 - F)) is 1. Radiance also
+                // scales by eta^2 at each crossing, but a path reaches the
+                // light (outside) only after leaving the sphere as often as
+                // it entered, so the factors cancel and are left out.
                 let reflectance = fresnel(cos_i, eta);
                 ray = if bsdf.x < reflectance {
                     Ray {
