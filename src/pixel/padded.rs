@@ -10,8 +10,8 @@ use crate::primitives::{
 };
 use crate::samplers::sequence::digital::OwenSeeds;
 use crate::samplers::sequence::pmj02::{stirling_x, stirling_y};
-use crate::samplers::sequence::sobol_4d::dimensions_2_3_reversed;
 use crate::samplers::sequence::sobol::pascal_reversed;
+use crate::samplers::sequence::sobol_4d::dimensions_2_3_reversed;
 use crate::{
     AnySampler, CorrelatedMultiJittered, Halton, Hammersley, Jittered, MultiJittered, NRooks,
     Pmj02, Random, Regular, Sampler2D, Sobol,
