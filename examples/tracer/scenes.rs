@@ -100,7 +100,8 @@ impl SceneKind {
     /// `docs/tracer.md`, so it fits in well under a minute on two cores.
     /// The polygon is shown at 5 x 7, where one pixel is a large fraction
     /// of the shape, and at 64 x 64, where the staircase along its edges is
-    /// plain.
+    /// plain. The Cornell box at 128 x 128, 4 and 16 spp and 4 seeds traces
+    /// about 16 M paths for twelve samplers, about 8 CPU seconds.
     pub fn default_sizes(self) -> &'static [(u32, u32)] {
         match self {
             SceneKind::Checker | SceneKind::Moire | SceneKind::MoireResolved => &[(192, 192)],
