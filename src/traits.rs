@@ -75,9 +75,11 @@ pub trait Sampler2D {
 /// The contract, tested for every implementor:
 ///
 /// - [`sample`](Sampler2D::sample) accepts every `index` in `0..2^32`,
-///   whatever [`len`](Sampler2D::len) is; `len` only bounds
-///   [`fill`](Sampler2D::fill). Each type's `unbounded()` constructor has
-///   `len() == u32::MAX` and the same points as every sized one.
+///   whatever [`len`](Sampler2D::len) is; `len` is only the set size that
+///   [`fill`](Sampler2D::fill) and the tools use.
+/// - Each type's `new(n)` takes any set size from 1 to `u32::MAX`
+///   ([`Error::ZeroSamples`](crate::Error::ZeroSamples) for 0), and its
+///   `unbounded()` has `len() == u32::MAX`: all give the same points.
 /// - [`fill_from`](Sequence2D::fill_from) writes any run of indices, so a
 ///   progressive renderer can add samples to a pixel without recomputing
 ///   the first ones.
@@ -93,6 +95,16 @@ pub trait Sampler2D {
 /// sequence.fill(3, &mut points[..16]);
 /// sequence.fill_from(16, 3, &mut points[16..]);
 /// assert_eq!(points[20], sequence.sample(20, 3));
+/// ```
+///
+/// The set size changes `len` only:
+///
+/// ```
+/// use wellspread::{Halton, Pmj02, Sampler2D, Sobol};
+/// assert_eq!(Sobol::unbounded().sample(1000, 3), Sobol::new(16)?.sample(1000, 3));
+/// assert_eq!(Pmj02::unbounded().sample(1000, 3), Pmj02::new(16)?.sample(1000, 3));
+/// assert_eq!(Halton::unbounded().sample(1000, 3), Halton::new(16)?.sample(1000, 3));
+/// # Ok::<(), wellspread::Error>(())
 /// ```
 pub trait Sequence2D: Sampler2D {
     /// Writes samples `start..start + out.len()` of pattern `pattern` into

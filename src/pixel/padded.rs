@@ -36,6 +36,10 @@ use crate::{
 ///   `pattern_seed`: the draws have the same guarantees as `sample_pixel`,
 ///   with other values. What each width gives is [`DomainSampler`]'s table.
 ///
+/// `Padded<S>` is a pixel sampler for every `S:` [`DomainSampler`]; the
+/// crate's samplers all are, and a [`Sampler2D`] of your own becomes one
+/// with `impl DomainSampler for MySampler {}`.
+///
 /// # Cost
 ///
 /// `sample_pixel`: one [`pattern_seed`] (seven [`hash_u32`]) plus the
@@ -250,15 +254,16 @@ fn stratified_1d(index: u32, n: u32, stream: u32, jitter: bool) -> f32 {
 
 /// The three seeds of a shuffled, scrambled 2D draw from one well-mixed
 /// `stream`, without hashing again: the index shuffle takes `stream`, each
-/// coordinate a rotation of it times an odd constant, so that the low bits
-/// of each seed (which pick the scramble's top digits) come from a
-/// different part of `stream`.
+/// coordinate a rotation of it (xored with a constant, so that stream 0
+/// gives three different seeds). The low bits of a seed pick the
+/// scramble's top digits, and each seed's come from a different part of
+/// `stream`.
 #[inline(always)]
 pub(super) const fn seeds_2d(stream: u32) -> OwenSeeds {
     OwenSeeds {
         index: stream,
-        x: stream.rotate_right(11).wrapping_mul(0x2c1b_3c6d),
-        y: stream.rotate_right(22).wrapping_mul(0x297a_2d39),
+        x: stream.rotate_right(11) ^ 0x2c1b_3c6d,
+        y: stream.rotate_right(22) ^ 0x297a_2d39,
     }
 }
 
@@ -308,10 +313,10 @@ const fn sobol_1d(index: u32, stream: u32) -> f32 {
 /// Sobol' set whose scrambles are seeded by `stream`.
 #[inline(always)]
 pub(super) const fn sobol_4d_at(s: u32, stream: u32) -> Vec4 {
-    let x = stream.rotate_right(11).wrapping_mul(0x2c1b_3c6d);
-    let y = stream.rotate_right(22).wrapping_mul(0x297a_2d39);
-    let z = stream.rotate_right(5).wrapping_mul(0x6f4f_2a35);
-    let w = stream.rotate_right(27).wrapping_mul(0x8f1b_bcdd);
+    // The seeds of `seeds_2d` and two more rotations.
+    let OwenSeeds { x, y, .. } = seeds_2d(stream);
+    let z = stream.rotate_right(6) ^ 0x6f4f_2a35;
+    let w = stream.rotate_right(27) ^ 0x8f1b_bcdd;
     let (c2, c3) = dimensions_2_3_reversed(s);
     let (a, b) = reverse_pair(
         owen_scramble_reversed(s, x),

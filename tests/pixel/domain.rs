@@ -621,3 +621,28 @@ fn zsobol_domain_draws_keep_quad_error_cancellation() {
         }
     }
 }
+
+/// For the fixed-size samplers the spp * count split children of a pixel
+/// are `count` complete sets: children `p spp .. (p + 1) spp` (in child
+/// index order) fall into `spp` distinct 1D strata.
+#[test]
+fn split_children_of_fixed_size_samplers_are_complete_sets() {
+    let (spp, count) = (9, 3);
+    for kind in ["jittered", "cmj", "n-rooks", "multi-jittered", "hammersley"] {
+        let sampler = kind
+            .parse::<PixelSamplerKind>()
+            .unwrap()
+            .build(spp, [8, 8], 4)
+            .unwrap();
+        let mut children = vec![0.0f32; (spp * count) as usize];
+        for i in 0..spp {
+            let d = sampler.start([2, 3], i);
+            for j in 0..count {
+                children[(i * count + j) as usize] = d.split(11, count, j).next_1d();
+            }
+        }
+        for set in children.chunks(spp as usize) {
+            assert!(distinct_strata(set), "{kind}: {set:?}");
+        }
+    }
+}

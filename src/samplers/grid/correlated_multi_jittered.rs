@@ -12,10 +12,8 @@ use crate::{Error, SamplerKind};
 ///
 /// # Properties
 ///
-/// - Stratified: exactly one point in each cell of the `columns x rows` grid
-///   (`columns * rows = n`, the most square factorisation, `columns <= rows`).
-/// - Latin: exactly one point in each of the `n` columns and `n` rows of the
-///   fine grid, checked exactly on the f32 values.
+/// - Stratified on the coarse grid and Latin on the fine grid, as
+///   [`MultiJittered`](crate::MultiJittered).
 /// - The shared shuffle keeps neighbouring points apart: the mean minimum
 ///   distance is about twice [`MultiJittered`](crate::MultiJittered)'s (at
 ///   n = 64 to 256), at about the same L2-star discrepancy. It also makes
@@ -30,14 +28,14 @@ use crate::{Error, SamplerKind};
 /// then three permutations (the cells, and the two shared shuffles: a
 /// Fisher-Yates shuffle for sides up to 8), two
 /// [`rand_u32`](crate::primitives::rand_u32) and two fixed-point stratum
-/// conversions; no division, no table. `fill` builds the two shared shuffles once per pattern (as tables for sides 9 to 256), so a
-/// sample pays one permutation and two lookups.
+/// conversions; no division, no table. `fill` builds the two shared
+/// shuffles once per pattern (as tables for sides 9 to 256), so a sample
+/// pays one permutation and two lookups.
 ///
 /// # Limits
 ///
-/// `n` at most 2^24 ([`CorrelatedMultiJittered::MAX_SAMPLES`]), the number
-/// of f32 strata in `[0, 1)`. In release builds an index at or above `len()`
-/// returns one of the set's points.
+/// `n` at most [`CorrelatedMultiJittered::MAX_SAMPLES`]. In release builds
+/// an index at or above `len()` returns one of the set's points.
 ///
 /// # Examples
 ///
@@ -64,7 +62,8 @@ pub struct CorrelatedMultiJittered {
 }
 
 impl CorrelatedMultiJittered {
-    /// The largest `n` accepted: 2^24, the number of distinct f32 strata.
+    /// The largest `n` accepted: 2^24, as for
+    /// [`NRooks`](crate::NRooks::MAX_SAMPLES).
     pub const MAX_SAMPLES: u32 = MAX_STRATA;
 
     /// A correlated multi-jittered set of `n` points.
@@ -170,7 +169,7 @@ impl CorrelatedMultiJittered {
         let grid = &self.grid;
         CorrelatedMultiJitteredPattern {
             grid,
-            order: Permutation::new(grid.len(), derived_key(pattern_hash, salt::ORDER)),
+            order: grid.cell_order(pattern_hash),
             sub_columns: Permutation::new(grid.rows(), derived_key(pattern_hash, salt::SHUFFLE_X)),
             sub_rows: Permutation::new(grid.columns(), derived_key(pattern_hash, salt::SHUFFLE_Y)),
             jitter: Jitter::new(pattern_hash),

@@ -1,7 +1,7 @@
 use glam::Vec2;
 
 use super::{CellOffset, Grid, GridPattern, Jitter, fill_grid};
-use crate::primitives::{Permutation, derived_key, hash_u32, salt};
+use crate::primitives::{Permutation, hash_u32};
 use crate::simd::Isa;
 use crate::traits::{FillOn, Sampler2D};
 use crate::{Error, SamplerKind};
@@ -21,8 +21,9 @@ use crate::{Error, SamplerKind};
 ///   smooth ones, against `n^-1/2` for [`Random`](crate::Random).
 ///
 /// [`Jittered::new`] picks the most square grid with `columns <= rows` and
-/// `columns * rows = n`; for a prime `n` that is `1 x n` strips, stratified in
-/// y only. [`Jittered::with_grid`] takes any shape.
+/// `columns * rows = n`: `4 x 4` for 16, `4 x 8` for 32, and for a prime `n`
+/// `1 x n` strips, stratified in y only. [`Jittered::with_grid`] takes any
+/// shape.
 ///
 /// # Cost
 ///
@@ -34,7 +35,8 @@ use crate::{Error, SamplerKind};
 ///
 /// # Limits
 ///
-/// `columns` and `rows` at most 2^24 and `columns * rows` at most `u32::MAX`.
+/// `columns` and `rows` at most 2^24 (f32 cannot separate more strata) and
+/// `columns * rows` at most `u32::MAX`.
 /// Inside a cell the offset is quantised to the `2^-24` grid. In release
 /// builds an index at or above `len()` returns a point of the set's grid.
 ///
@@ -100,7 +102,7 @@ impl Jittered {
         let pattern_hash = hash_u32(pattern);
         JitteredPattern {
             grid: &self.grid,
-            order: Permutation::new(self.len(), derived_key(pattern_hash, salt::ORDER)),
+            order: self.grid.cell_order(pattern_hash),
             offset: Jitter::new(pattern_hash),
         }
     }

@@ -26,7 +26,7 @@ pub use multi_jittered::MultiJittered;
 pub use n_rooks::{LatinHypercube, NRooks};
 pub use regular::Regular;
 
-use crate::primitives::{InvariantDivisor, MAX_STRATA, rand_u32, salt};
+use crate::primitives::{InvariantDivisor, MAX_STRATA, Permutation, derived_key, rand_u32, salt};
 use crate::simd::{self, Isa, Kernel};
 use crate::traits::{check_fill_len, debug_check_index};
 use crate::{Error, SamplerKind};
@@ -130,6 +130,17 @@ impl Grid {
             rows: InvariantDivisor::new(rows),
             n: InvariantDivisor::new(columns * rows),
         }
+    }
+
+    /// The order in which pattern `pattern_hash`'s indices visit the
+    /// cells: a permutation of `0..n` keyed by
+    /// `derived_key(pattern_hash, salt::ORDER)`. Every grid sampler but
+    /// [`NRooks`](crate::NRooks) (which has no cells to order) shuffles its
+    /// indices with it, so that padded dimension pairs sharing an index are
+    /// not correlated.
+    #[inline(always)]
+    pub(crate) fn cell_order(&self, pattern_hash: u32) -> Permutation {
+        Permutation::new(self.len(), derived_key(pattern_hash, salt::ORDER))
     }
 
     /// Number of columns.

@@ -1,7 +1,7 @@
 use glam::Vec2;
 
 use super::{Grid, GridPattern, Jitter, SMALL_TABLE, fill_grid};
-use crate::primitives::{MAX_STRATA, Permutation, derived_key, hash_u32, salt};
+use crate::primitives::{MAX_STRATA, Permutation, hash_u32, salt};
 use crate::simd::Isa;
 use crate::traits::{FillOn, Sampler2D};
 use crate::{Error, SamplerKind};
@@ -34,10 +34,9 @@ use crate::{Error, SamplerKind};
 ///
 /// # Limits
 ///
-/// `n` at most 2^24 ([`MultiJittered::MAX_SAMPLES`]), the number of f32
-/// strata in `[0, 1)`. The fine grid is never formed as `n * n`, so nothing
-/// overflows. In release builds an index at or above `len()` returns one of
-/// the set's points.
+/// `n` at most [`MultiJittered::MAX_SAMPLES`]. The fine grid is never
+/// formed as `n * n`, so nothing overflows. In release builds an index at
+/// or above `len()` returns one of the set's points.
 ///
 /// # Examples
 ///
@@ -67,7 +66,8 @@ pub struct MultiJittered {
 }
 
 impl MultiJittered {
-    /// The largest `n` accepted: 2^24, the number of distinct f32 strata.
+    /// The largest `n` accepted: 2^24, as for
+    /// [`NRooks`](crate::NRooks::MAX_SAMPLES).
     pub const MAX_SAMPLES: u32 = MAX_STRATA;
 
     /// A multi-jittered set of `n` points.
@@ -228,7 +228,7 @@ impl MultiJittered {
         let pattern_hash = hash_u32(pattern);
         MultiJitteredPattern {
             grid: &self.grid,
-            order: Permutation::new(self.len(), derived_key(pattern_hash, salt::ORDER)),
+            order: self.grid.cell_order(pattern_hash),
             shuffles: HashedLines {
                 columns: self.grid.columns(),
                 rows: self.grid.rows(),

@@ -2,7 +2,7 @@ use glam::Vec2;
 
 use super::jittered::JitteredPattern;
 use super::{Centre, Grid, GridPattern, fill_grid};
-use crate::primitives::{Permutation, derived_key, hash_u32, salt};
+use crate::primitives::hash_u32;
 use crate::simd::Isa;
 use crate::traits::{FillOn, Sampler2D};
 use crate::{Error, SamplerKind};
@@ -18,23 +18,19 @@ use crate::{Error, SamplerKind};
 ///   which indices visit the cells, so that further dimension pairs padded
 ///   with other patterns are not correlated with this one.
 ///
-/// [`Regular::new`] picks the most square grid with `columns <= rows` and
-/// `columns * rows = n`: `4 x 4` for 16, `4 x 8` for 32, and `1 x n` strips
-/// for a prime `n`. [`Regular::with_grid`] takes any shape.
+/// The grids are [`Jittered`](crate::Jittered)'s: [`Regular::new`] picks
+/// the most square one (`4 x 4` for 16, `4 x 8` for 32, `1 x n` strips for
+/// a prime `n`), [`Regular::with_grid`] takes any shape.
 ///
 /// # Cost
 ///
-/// Per sample: one permutation lookup (a nibble of the pattern's shuffle for
-/// n <= 8, else four or five rounds of about eight integer operations) and two
-/// fixed-point stratum conversions; no division (the grid stores the
-/// reciprocals of its sides). `sample` adds one hash of the pattern and one
-/// 5-operation key derivation.
+/// [`Jittered`](crate::Jittered)'s without the jitter: per sample one
+/// permutation lookup and two fixed-point stratum conversions.
 ///
 /// # Limits
 ///
-/// `columns` and `rows` at most 2^24 (f32 cannot separate more strata) and
-/// `columns * rows` at most `u32::MAX`. In release builds an index at or above
-/// `len()` returns one of the set's points.
+/// [`Jittered`](crate::Jittered)'s grid limits. In release builds an index
+/// at or above `len()` returns one of the set's points.
 ///
 /// # Examples
 ///
@@ -61,8 +57,7 @@ impl Regular {
     ///
     /// # Errors
     ///
-    /// [`Error::ZeroSamples`] for `n = 0`; [`Error::GridTooFine`] when the
-    /// grid would have more than 2^24 rows (a prime above 2^24, or twice one).
+    /// Those of [`Jittered::new`](crate::Jittered::new).
     pub fn new(n: u32) -> Result<Self, Error> {
         Grid::most_square(SamplerKind::Regular, n).map(|grid| Self { grid })
     }
@@ -71,9 +66,7 @@ impl Regular {
     ///
     /// # Errors
     ///
-    /// [`Error::ZeroGridSide`] if either side is 0; [`Error::GridTooFine`]
-    /// if a side exceeds 2^24; [`Error::TooManySamples`] if `columns * rows`
-    /// exceeds `u32::MAX`.
+    /// Those of [`Jittered::with_grid`](crate::Jittered::with_grid).
     pub fn with_grid(columns: u32, rows: u32) -> Result<Self, Error> {
         Grid::with_sides(SamplerKind::Regular, columns, rows).map(|grid| Self { grid })
     }
@@ -96,7 +89,7 @@ impl Regular {
     fn pattern(&self, pattern: u32) -> JitteredPattern<'_, Centre> {
         JitteredPattern {
             grid: &self.grid,
-            order: Permutation::new(self.len(), derived_key(hash_u32(pattern), salt::ORDER)),
+            order: self.grid.cell_order(hash_u32(pattern)),
             offset: Centre,
         }
     }

@@ -55,23 +55,24 @@ pub(crate) const fn bits_to_point((x, y): (u32, u32)) -> Vec2 {
     Vec2::new(u32_to_unit_f32(x), u32_to_unit_f32(y))
 }
 
-/// The points of a digital sequence `D` for the pattern whose seeds are
-/// `seeds`, as a lane kernel. Every step of a point is a 32-bit integer
-/// operation on its own lane (multiplies, shifts, masks, bit reversals), so
-/// batches run in SIMD registers.
-#[inline(always)]
-pub(crate) fn sequence_kernel<D: DigitalSequence>(seeds: OwenSeeds) -> Pointwise<impl PointKernel> {
-    Pointwise(SequenceKernel::<D> {
-        seeds,
-        sequence: core::marker::PhantomData,
-    })
-}
-
-/// A shuffled, Owen-scrambled digital (0,2)-sequence: its point formula.
-pub(crate) trait DigitalSequence {
+/// A shuffled, Owen-scrambled digital (0,2)-sequence: its point formula,
+/// and the kernel built from it that `sample`, `fill` and `fill_from` run.
+pub(crate) trait DigitalSequence: Sized {
     /// Point `index` in natural-order 0.32 fixed point, for the pattern
     /// whose seeds are `seeds`.
     fn point_bits(index: u32, seeds: OwenSeeds) -> (u32, u32);
+
+    /// The points of pattern `pattern`, as a lane kernel: the one
+    /// `sample`, `fill` and `fill_from` run. Every step of a point is a
+    /// 32-bit integer operation on its own lane (multiplies, shifts, masks,
+    /// bit reversals), so batches run in SIMD registers.
+    #[inline(always)]
+    fn kernel(pattern: u32) -> Pointwise<impl PointKernel> {
+        Pointwise(SequenceKernel::<Self> {
+            seeds: OwenSeeds::new(pattern),
+            sequence: core::marker::PhantomData,
+        })
+    }
 }
 
 /// One pattern of a digital sequence, as a [`PointKernel`].

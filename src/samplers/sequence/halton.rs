@@ -32,8 +32,7 @@ const BASE3_STRATA: u32 = 14_348_907;
 ///
 /// # Properties
 ///
-/// - A sequence: `sample` accepts every `index` below `2^32`; `len()` is
-///   the set size for [`fill`](Sampler2D::fill) and the tools.
+/// - A [`Sequence2D`]: every `index` in `0..2^32` is valid.
 /// - Any run of `2^a 3^b` consecutive indices (not only a prefix;
 ///   `a <= 24`, `b <= 15`) has exactly one point in each cell of the
 ///   `2^a x 3^b` grid, checked exactly on the f32 values; in particular
@@ -51,8 +50,7 @@ const BASE3_STRATA: u32 = 14_348_907;
 ///
 /// # Limits
 ///
-/// Any `n` from 1 to `u32::MAX` for the set size. Base-3 strata are exact
-/// down to `3^-15`; finer digits are hashed jitter, so the index digits
+/// Base-3 strata are exact down to `3^-15`; finer digits are hashed jitter, so the index digits
 /// beyond the fifteenth (indices from `3^15 = 14_348_907` on) only select
 /// which jitter a point gets. Coordinates are multiples of `2^-24`.
 ///
@@ -93,8 +91,7 @@ pub struct Halton {
 }
 
 impl Halton {
-    /// The scrambled Halton sequence, with `n` as the set size for
-    /// [`fill`](Sampler2D::fill) and the tools.
+    /// The sequence with set size `n` (see [`Sequence2D`]).
     ///
     /// # Errors
     ///
@@ -103,16 +100,8 @@ impl Halton {
         set_size(n).map(|n| Self { n })
     }
 
-    /// The sequence with no set size: every index in `0..2^32` is valid and
-    /// [`len`](Sampler2D::len) is `u32::MAX`, so `fill` writes any prefix.
-    /// The same points as `Halton::new(n)` for every `n`; use it with
-    /// [`fill_from`](Sequence2D::fill_from) for progressive rendering.
-    ///
-    /// ```
-    /// use wellspread::{Halton, Sampler2D};
-    /// assert_eq!(Halton::unbounded().sample(1000, 3), Halton::new(16)?.sample(1000, 3));
-    /// # Ok::<(), wellspread::Error>(())
-    /// ```
+    /// The sequence with no set size, `len() == u32::MAX` (see
+    /// [`Sequence2D`]).
     #[must_use]
     pub const fn unbounded() -> Self {
         Self { n: u32::MAX }
@@ -131,8 +120,6 @@ impl Sampler2D for Halton {
         self.n
     }
 
-    /// Sample `index` of pattern `pattern`; every `index` below `2^32` is
-    /// valid, including those at or above [`len`](Sampler2D::len).
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
         Self::kernel(pattern).points([index])[0]

@@ -1,9 +1,10 @@
 //! The progressive sequences ([`Sobol`], [`Pmj02`], [`Halton`]) and what
 //! they share apart from their point formulas: a set size that only bounds
 //! `fill`, and the checked runs of `fill` and
-//! [`fill_from`](crate::Sequence2D::fill_from). Each sampler's file supplies
-//! `kernel(pattern)`, its points as a [`Kernel`]; `sample` and every `fill`
-//! path run that one kernel.
+//! [`fill_from`](crate::Sequence2D::fill_from). Each sampler has a
+//! `kernel(pattern)`, its points as a [`Kernel`] (Halton's own;
+//! `digital::DigitalSequence` builds Sobol's and Pmj02's from their point
+//! formulas); `sample` and every `fill` path run that one kernel.
 //!
 //! [`Sobol`]: crate::Sobol
 //! [`Pmj02`]: crate::Pmj02

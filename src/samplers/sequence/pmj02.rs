@@ -1,6 +1,6 @@
 use glam::Vec2;
 
-use super::digital::{DigitalSequence, OwenSeeds, scrambled_bits, sequence_kernel};
+use super::digital::{DigitalSequence, OwenSeeds, scrambled_bits};
 use super::{fill_run, fill_set, set_size};
 use crate::Error;
 use crate::primitives::owen_scramble;
@@ -42,8 +42,7 @@ use crate::traits::{FillOn, Sampler2D, Sequence2D};
 ///
 /// # Properties
 ///
-/// - A sequence: `sample` accepts every `index` below `2^32`; `len()` is
-///   the set size for [`fill`](Sampler2D::fill) and the tools.
+/// - A [`Sequence2D`]: every `index` in `0..2^32` is valid.
 /// - Progressive: every power-of-two prefix `0..2^m` (`m <= 24`), and every
 ///   aligned block of `2^m`, is a (0,m,2)-net, checked exactly on the f32
 ///   values. Prefixes of length `4^k` are therefore stratified on
@@ -60,11 +59,11 @@ use crate::traits::{FillOn, Sampler2D, Sequence2D};
 ///
 /// # Limits
 ///
-/// Any `n` from 1 to `u32::MAX` for the set size. Coordinates are multiples
-/// of `2^-24`, so the net property is exact up to `2^24` points; beyond that
-/// boxes are narrower than the f32 spacing below 1.0. This is pmj02 without
-/// the blue-noise "best candidate" selection of pmj02bn, which needs a
-/// search over previous points and so cannot be random access.
+/// Coordinates are multiples of `2^-24`, so the net property is exact up to
+/// `2^24` points; beyond that boxes are narrower than the f32 spacing below
+/// 1.0. This is pmj02 without the blue-noise "best candidate" selection of
+/// pmj02bn, which needs a search over previous points and so cannot be
+/// random access.
 ///
 /// # Examples
 ///
@@ -99,8 +98,7 @@ pub struct Pmj02 {
 }
 
 impl Pmj02 {
-    /// The pmj02 sequence, with `n` as the set size for
-    /// [`fill`](Sampler2D::fill) and the tools.
+    /// The sequence with set size `n` (see [`Sequence2D`]).
     ///
     /// # Errors
     ///
@@ -109,25 +107,11 @@ impl Pmj02 {
         set_size(n).map(|n| Self { n })
     }
 
-    /// The sequence with no set size: every index in `0..2^32` is valid and
-    /// [`len`](Sampler2D::len) is `u32::MAX`, so `fill` writes any prefix.
-    /// The same points as `Pmj02::new(n)` for every `n`; use it with
-    /// [`fill_from`](Sequence2D::fill_from) for progressive rendering.
-    ///
-    /// ```
-    /// use wellspread::{Pmj02, Sampler2D};
-    /// assert_eq!(Pmj02::unbounded().sample(1000, 3), Pmj02::new(16)?.sample(1000, 3));
-    /// # Ok::<(), wellspread::Error>(())
-    /// ```
+    /// The sequence with no set size, `len() == u32::MAX` (see
+    /// [`Sequence2D`]).
     #[must_use]
     pub const fn unbounded() -> Self {
         Self { n: u32::MAX }
-    }
-
-    /// The points of pattern `pattern`, as a lane kernel.
-    #[inline(always)]
-    fn kernel(pattern: u32) -> impl Kernel {
-        sequence_kernel::<Self>(OwenSeeds::new(pattern))
     }
 }
 
@@ -137,8 +121,6 @@ impl Sampler2D for Pmj02 {
         self.n
     }
 
-    /// Sample `index` of pattern `pattern`; every `index` below `2^32` is
-    /// valid, including those at or above [`len`](Sampler2D::len).
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
         Self::kernel(pattern).points([index])[0]

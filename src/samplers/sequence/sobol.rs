@@ -1,6 +1,6 @@
 use glam::Vec2;
 
-use super::digital::{DigitalSequence, OwenSeeds, scrambled_bits, sequence_kernel};
+use super::digital::{DigitalSequence, OwenSeeds, scrambled_bits};
 use super::{fill_run, fill_set, set_size};
 use crate::Error;
 use crate::primitives::owen_scramble;
@@ -34,9 +34,7 @@ use crate::traits::{FillOn, Sampler2D, Sequence2D};
 ///
 /// # Properties
 ///
-/// - A sequence: `sample` accepts every `index` in `0..2^32`, whatever
-///   `len()` is. `len()` is only the set size that
-///   [`fill`](Sampler2D::fill) and the tools use.
+/// - A [`Sequence2D`]: every `index` in `0..2^32` is valid.
 /// - Every power-of-two prefix `0..2^m` (`m <= 24`), and every aligned block
 ///   `k 2^m..(k + 1) 2^m`, is a (0,m,2)-net: each of the `2^m` boxes
 ///   `2^-a x 2^-(m-a)` of every shape `a = 0..=m` holds exactly one point,
@@ -56,11 +54,11 @@ use crate::traits::{FillOn, Sampler2D, Sequence2D};
 ///
 /// # Limits
 ///
-/// Any `n` from 1 to `u32::MAX` for the set size. Coordinates are multiples
-/// of `2^-24`, so nets are exact for prefixes up to `2^24` points; beyond
-/// that the boxes are narrower than the f32 spacing below 1.0 and two points
-/// can share a coordinate. No index wraps: the `2^32` indices give `2^32`
-/// distinct points in 32-bit fixed point, before the truncation to 24 bits.
+/// Coordinates are multiples of `2^-24`, so nets are exact for prefixes up
+/// to `2^24` points; beyond that the boxes are narrower than the f32
+/// spacing below 1.0 and two points can share a coordinate. No index
+/// wraps: the `2^32` indices give `2^32` distinct points in 32-bit fixed
+/// point, before the truncation to 24 bits.
 ///
 /// # Examples
 ///
@@ -113,8 +111,7 @@ pub struct Sobol {
 }
 
 impl Sobol {
-    /// The Owen-scrambled Sobol sequence, with `n` as the set size for
-    /// [`fill`](Sampler2D::fill) and the tools.
+    /// The sequence with set size `n` (see [`Sequence2D`]).
     ///
     /// # Errors
     ///
@@ -123,25 +120,11 @@ impl Sobol {
         set_size(n).map(|n| Self { n })
     }
 
-    /// The sequence with no set size: every index in `0..2^32` is valid and
-    /// [`len`](Sampler2D::len) is `u32::MAX`, so `fill` writes any prefix.
-    /// The same points as `Sobol::new(n)` for every `n`; use it with
-    /// [`fill_from`](Sequence2D::fill_from) for progressive rendering.
-    ///
-    /// ```
-    /// use wellspread::{Sobol, Sampler2D};
-    /// assert_eq!(Sobol::unbounded().sample(1000, 3), Sobol::new(16)?.sample(1000, 3));
-    /// # Ok::<(), wellspread::Error>(())
-    /// ```
+    /// The sequence with no set size, `len() == u32::MAX` (see
+    /// [`Sequence2D`]).
     #[must_use]
     pub const fn unbounded() -> Self {
         Self { n: u32::MAX }
-    }
-
-    /// The points of pattern `pattern`, as a lane kernel.
-    #[inline(always)]
-    fn kernel(pattern: u32) -> impl Kernel {
-        sequence_kernel::<Self>(OwenSeeds::new(pattern))
     }
 }
 
@@ -151,8 +134,6 @@ impl Sampler2D for Sobol {
         self.n
     }
 
-    /// Sample `index` of pattern `pattern`; every `index` below `2^32` is
-    /// valid, including those at or above [`len`](Sampler2D::len).
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
         Self::kernel(pattern).points([index])[0]
