@@ -8,7 +8,7 @@
 //! Run with `--help` for the input and output formats and the exit codes.
 
 use std::ffi::OsString;
-use std::io::{self, Read, Write};
+use std::io::{self, BufRead, Read, Write};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -70,19 +70,21 @@ pub fn main_with(
     let Some(args) = shared::parse::<Args>("metrics", &after_help, args, stdout)? else {
         return Ok(());
     };
-    let mut bytes = Vec::new();
-    match &args.file {
+    let points = match &args.file {
         Some(path) if path.as_os_str() != "-" => {
-            bytes = std::fs::read(path)
+            let file = std::fs::File::open(path)
                 .map_err(|e| Failure::Io(format!("cannot read {}: {e}", path.display())))?;
+            let size = file.metadata().map_or(0, |m| m.len());
+            read_points(&mut io::BufReader::new(file), size).map_err(|e| match e {
+                ReadError::Input(message) => Failure::Input(message),
+                ReadError::Io(e) => Failure::Io(format!("cannot read {}: {e}", path.display())),
+            })?
         }
-        _ => {
-            stdin
-                .read_to_end(&mut bytes)
-                .map_err(|e| Failure::Io(format!("cannot read standard input: {e}")))?;
-        }
-    }
-    let points = parse_points(&bytes).map_err(Failure::Input)?;
+        _ => read_points(&mut io::BufReader::new(stdin), 0).map_err(|e| match e {
+            ReadError::Input(message) => Failure::Input(message),
+            ReadError::Io(e) => Failure::Io(format!("cannot read standard input: {e}")),
+        })?,
+    };
     let json = report(&points, args.stratified).map_err(Failure::Input)?;
     writeln!(stdout, "{json}").map_err(|e| Failure::Io(format!("cannot write the report: {e}")))
 }
@@ -92,65 +94,209 @@ pub fn parse_grid(text: &str) -> Result<(u32, u32), String> {
     let side = |s: &str| s.trim().parse::<u32>().ok().filter(|&v| v > 0);
     text.split_once(['x', 'X'])
         .and_then(|(m, k)| Some((side(m)?, side(k)?)))
-        .ok_or_else(|| format!("{text:?} is not a grid MxK of two whole numbers from 1, e.g. 8x8"))
+        .ok_or_else(|| {
+            format!(
+                "{} is not a grid MxK of two whole numbers from 1, e.g. 8x8",
+                shared::quoted(text)
+            )
+        })
 }
 
-/// The points of a CSV text, or a one-line error naming the 1-based line.
-pub fn parse_points(bytes: &[u8]) -> Result<Vec<Vec2>, String> {
-    let text = std::str::from_utf8(bytes).map_err(|e| {
-        let line = 1 + bytes[..e.valid_up_to()]
-            .iter()
-            .filter(|&&b| b == b'\n')
-            .count();
-        format!("line {line}: not UTF-8 text")
-    })?;
-    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+/// Why [`read_points`] stopped.
+#[derive(Debug)]
+pub enum ReadError {
+    /// Bad input: a one-line message naming the line and column.
+    Input(String),
+    /// Reading failed.
+    Io(io::Error),
+}
+
+/// Bytes of a line kept for parsing: far more than any two f32 numbers
+/// need. A longer line is an error, reported without keeping the rest.
+pub const MAX_LINE: usize = 1024;
+
+/// Characters of the input an error message quotes at most.
+pub const QUOTE: usize = 80;
+
+/// The points of a CSV text (`x,y` per line; a byte-order mark, blank lines
+/// and a header line are skipped), or a one-line error naming the 1-based
+/// line and column and quoting at most [`QUOTE`] characters of the input.
+///
+/// The input is streamed: memory is the points plus one line of at most
+/// [`MAX_LINE`] bytes, whatever the input holds. `size_hint` (the input's
+/// size in bytes, 0 if unknown) sizes the point buffer once the first lines
+/// show the typical line length.
+pub fn read_points(reader: &mut dyn BufRead, size_hint: u64) -> Result<Vec<Vec2>, ReadError> {
+    const SAMPLE_LINES: usize = 1024;
     let mut points = Vec::new();
-    let mut first = true;
-    for (number, line) in (1..).zip(text.lines()) {
-        let line = line.trim();
-        if line.is_empty() {
-            continue;
-        }
-        let fields: Vec<&str> = line.split(',').map(str::trim).collect();
-        let header = fields.iter().all(|f| f.parse::<f64>().is_err());
-        if std::mem::replace(&mut first, false) && header {
-            continue;
-        }
-        let [x, y] = fields[..] else {
-            return Err(format!(
-                "line {number}: expected `x,y` (two numbers), got {} fields in `{line}`",
-                fields.len()
-            ));
+    let mut line = Vec::with_capacity(MAX_LINE);
+    let mut header_allowed = true;
+    let mut bytes_read = 0u64;
+    for number in 1usize.. {
+        let Some(length) = read_line(reader, &mut line).map_err(ReadError::Io)? else {
+            break;
         };
-        points.push(Vec2::new(
-            coordinate(number, "x", x)?,
-            coordinate(number, "y", y)?,
-        ));
+        bytes_read += length as u64 + 1;
+        if number == SAMPLE_LINES && size_hint > bytes_read {
+            // Room for the rest at the mean line length so far, plus 1%.
+            let mean = (bytes_read / SAMPLE_LINES as u64).max(1);
+            let rest = (size_hint - bytes_read) / mean;
+            points.reserve_exact((rest + rest / 100) as usize);
+        }
+        let mut bytes = &line[..];
+        if number == 1 {
+            bytes = bytes.strip_prefix(b"\xef\xbb\xbf").unwrap_or(bytes);
+        }
+        let (text, bad_utf8) = match std::str::from_utf8(bytes) {
+            Ok(text) => (text, false),
+            Err(e) => (
+                std::str::from_utf8(&bytes[..e.valid_up_to()]).unwrap_or(""),
+                // A character cut by the MAX_LINE limit is not an error.
+                e.error_len().is_some() || length == line.len(),
+            ),
+        };
+        let column = |text: &str| text.chars().count() + 1;
+        if bad_utf8 {
+            return Err(ReadError::Input(format!(
+                "line {number}, column {}: not UTF-8 text",
+                column(text)
+            )));
+        }
+        if length > line.len() {
+            return Err(ReadError::Input(format!(
+                "line {number}, column {}: a line of {length} bytes, more than the {MAX_LINE} \
+                 allowed; expected `x,y` (two numbers), got `{}`",
+                column(text),
+                quote(text.trim_start())
+            )));
+        }
+        if text.trim().is_empty() {
+            continue;
+        }
+        let header = std::mem::replace(&mut header_allowed, false);
+        if let Some(point) = parse_line(number, text, header)? {
+            points.push(point);
+        }
     }
     if points.is_empty() {
-        return Err("no points in the input (expected `x,y` lines)".to_owned());
+        return Err(ReadError::Input(
+            "no points in the input (expected `x,y` lines)".to_owned(),
+        ));
     }
     Ok(points)
 }
 
+/// Reads one line without its `\n` into `line`, keeping at most
+/// [`MAX_LINE`] bytes of it and skipping the rest; returns the line's full
+/// length, or `None` at the end of the input.
+fn read_line(reader: &mut dyn BufRead, line: &mut Vec<u8>) -> io::Result<Option<usize>> {
+    line.clear();
+    let (mut length, mut any) = (0usize, false);
+    loop {
+        let chunk = match reader.fill_buf() {
+            Ok(chunk) => chunk,
+            Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(e),
+        };
+        if chunk.is_empty() {
+            return Ok(any.then_some(length));
+        }
+        any = true;
+        let end = chunk.iter().position(|&b| b == b'\n');
+        let part = &chunk[..end.unwrap_or(chunk.len())];
+        let room = MAX_LINE.saturating_sub(line.len());
+        line.extend_from_slice(&part[..part.len().min(room)]);
+        length += part.len();
+        let used = part.len() + usize::from(end.is_some());
+        reader.consume(used);
+        if end.is_some() {
+            return Ok(Some(length));
+        }
+    }
+}
+
+/// At most [`QUOTE`] characters of `text`, with `...` if cut.
+fn quote(text: &str) -> String {
+    match text.char_indices().nth(QUOTE) {
+        Some((cut, _)) => format!("{}...", &text[..cut]),
+        None => text.to_owned(),
+    }
+}
+
+/// One non-blank line: `Ok(None)` for the header (a first line with no
+/// numeric field, when `header_allowed`), else its point or a one-line error.
+fn parse_line(number: usize, line: &str, header_allowed: bool) -> Result<Option<Vec2>, ReadError> {
+    // Each field trimmed, with the 1-based column where it starts.
+    let mut fields = Vec::new();
+    let mut start = 0;
+    for raw in line.split(',') {
+        let lead = raw.len() - raw.trim_start().len();
+        let column = line[..start + lead].chars().count() + 1;
+        fields.push((column, raw.trim()));
+        start += raw.len() + 1;
+    }
+    if header_allowed && fields.iter().all(|(_, f)| f.parse::<f64>().is_err()) {
+        return Ok(None);
+    }
+    let [(x_column, x), (y_column, y)] = fields[..] else {
+        let column = match fields.get(2) {
+            Some(&(column, _)) => column,
+            None => line.trim_end().chars().count() + 1,
+        };
+        return Err(ReadError::Input(format!(
+            "line {number}, column {column}: expected `x,y` (two numbers), got {} fields in `{}`",
+            fields.len(),
+            quote(line.trim())
+        )));
+    };
+    let x = coordinate(number, x_column, "x", x).map_err(ReadError::Input)?;
+    let y = coordinate(number, y_column, "y", y).map_err(ReadError::Input)?;
+    Ok(Some(Vec2::new(x, y)))
+}
+
 /// One coordinate read as f32 and checked to be in [0, 1).
-fn coordinate(line: usize, axis: &str, text: &str) -> Result<f32, String> {
+fn coordinate(line: usize, column: usize, axis: &str, text: &str) -> Result<f32, String> {
+    let at = format!("line {line}, column {column}: {axis} = ");
+    let shown = quote(text);
     let value: f32 = text
         .parse()
-        .map_err(|_| format!("line {line}: {axis} = `{text}` is not a number"))?;
+        .map_err(|_| format!("{at}`{shown}` is not a number"))?;
     // `-0.0` is taken as 0, as the metrics do.
     if !value.is_finite() {
-        Err(format!("line {line}: {axis} = {text} is not finite"))
+        Err(format!("{at}{shown} is not finite"))
     } else if (0.0..1.0).contains(&value) {
         Ok(value)
-    } else if value == 1.0 && text.parse::<f64>().is_ok_and(|v| v < 1.0) {
-        Err(format!(
-            "line {line}: {axis} = {text} rounds to 1 in f32, outside [0, 1)"
-        ))
+    } else if value == 1.0 && decimal_below_one(text) {
+        Err(format!("{at}{shown} rounds to 1 in f32, outside [0, 1)"))
     } else {
-        Err(format!("line {line}: {axis} = {text} is outside [0, 1)"))
+        Err(format!("{at}{shown} is outside [0, 1)"))
     }
+}
+
+/// Whether a decimal number (as f32 parsing reads it: a sign, digits with an
+/// optional point, an optional exponent) is below 1, decided on its digits,
+/// so that a value that rounds to 1 in f32 and in f64 still counts as below.
+fn decimal_below_one(text: &str) -> bool {
+    let text = text.strip_prefix('+').unwrap_or(text);
+    let (mantissa, exponent) = match text.find(['e', 'E']) {
+        Some(at) => (&text[..at], text[at + 1..].parse::<i64>()),
+        None => (text, Ok(0)),
+    };
+    let Ok(exponent) = exponent else {
+        return false;
+    };
+    let (whole, fraction) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    let digits = || whole.bytes().chain(fraction.bytes());
+    if !digits().all(|b| b.is_ascii_digit()) {
+        return false;
+    }
+    let leading_zeros = digits().take_while(|&b| b == b'0').count();
+    if leading_zeros == whole.len() + fraction.len() {
+        return false;
+    }
+    // The value is 0.D x 10^power with D starting with a nonzero digit.
+    let power = whole.len() as i64 - leading_zeros as i64 + exponent;
+    power <= 0
 }
 
 /// The JSON object, one `"name": value` field per metric. Values are f64

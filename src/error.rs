@@ -267,7 +267,13 @@ impl fmt::Display for Error {
                  got {max_frequency}"
             ),
             Error::UnknownSampler { name } => {
-                write!(f, "unknown sampler \"{name}\"; expected one of:")?;
+                // Escaped, so that a newline in the name shows as `\n` and
+                // the message stays one line; a cut name ends in `...`.
+                write!(f, "unknown sampler \"{}", name.as_str().escape_debug())?;
+                if name.is_truncated() {
+                    f.write_str("...")?;
+                }
+                f.write_str("\"; expected one of:")?;
                 for kind in SamplerKind::ALL {
                     write!(f, " {kind}")?;
                 }
@@ -285,9 +291,14 @@ impl fmt::Display for Error {
                 write!(
                     f,
                     "zsobol needs a power-of-two number of samples per pixel (1, 2, 4, 8, ...), \
-                     got {samples_per_pixel}; use {} or {above}",
+                     got {samples_per_pixel}; use {}",
                     above / 2
-                )
+                )?;
+                // Above 2^31 the next power of two does not fit in a u32.
+                if above <= u64::from(u32::MAX) {
+                    write!(f, " or {above}")?;
+                }
+                Ok(())
             }
             Error::IndexSpaceTooLarge {
                 resolution: [width, height],
@@ -318,3 +329,56 @@ impl fmt::Display for Error {
 }
 
 impl core::error::Error for Error {}
+
+#[cfg(all(test, feature = "alloc"))]
+mod tests {
+    use super::*;
+    use alloc::string::ToString;
+
+    #[test]
+    fn unknown_sampler_names_are_escaped_and_cut() {
+        let Err(Error::UnknownSampler { name }) = "jit\ntered\"".parse::<SamplerKind>() else {
+            panic!("parsed a bad name");
+        };
+        let message = Error::UnknownSampler { name }.to_string();
+        assert!(!message.contains('\n'), "{message}");
+        assert!(
+            message.starts_with(r#"unknown sampler "jit\ntered\""; expected"#),
+            "{message}"
+        );
+        let long = "x".repeat(10_000);
+        let Err(Error::UnknownSampler { name }) = long.parse::<SamplerKind>() else {
+            panic!("parsed a bad name");
+        };
+        let message = Error::UnknownSampler { name }.to_string();
+        let quoted = &message[..message.find(';').unwrap()];
+        assert_eq!(
+            quoted,
+            alloc::format!("unknown sampler \"{}...\"", &long[..40])
+        );
+    }
+
+    #[test]
+    fn samples_per_pixel_suggestions_fit_in_u32() {
+        let Err(error) = crate::ZSobol::new(u32::MAX, [1, 1], 0) else {
+            panic!("accepted u32::MAX samples per pixel");
+        };
+        let message = error.to_string();
+        assert!(
+            message.ends_with("got 4294967295; use 2147483648"),
+            "{message}"
+        );
+        // Both neighbours where both fit.
+        let message = Error::SamplesNotPowerOfTwo {
+            samples_per_pixel: 6,
+        }
+        .to_string();
+        assert!(message.ends_with("got 6; use 4 or 8"), "{message}");
+        // 2^31 + 1 lies between 2^31 and 2^32.
+        let message = Error::SamplesNotPowerOfTwo {
+            samples_per_pixel: (1 << 31) + 1,
+        }
+        .to_string();
+        assert!(message.ends_with("use 2147483648"), "{message}");
+    }
+}

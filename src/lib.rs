@@ -97,9 +97,6 @@
 //!
 //! - `std` (default): the standard library; implies `alloc`.
 //! - `alloc` (default through `std`): heap allocation for the metrics.
-//! - `rayon` (off): runs the hidden O(n^2) wrap-around L2 oracle that the
-//!   tests compare the O(n log n) metric with on rayon's thread pool;
-//!   results do not depend on the thread count. No public metric needs it.
 //! - `simd` (default): `fill` on AVX2 or AVX-512 when the CPU has them
 //!   (detected at run time, with `std`). Without it the crate is
 //!   `#![forbid(unsafe_code)]` and `fill` runs the portable loop only, with

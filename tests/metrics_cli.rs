@@ -88,32 +88,59 @@ fn every_input_error_names_its_line() {
         // A first line with a numeric field is data, not a header.
         (
             b"0.5,0.5,extra\n0.25,0.75\n",
-            "line 1: expected `x,y` (two numbers), got 3 fields",
+            "line 1, column 9: expected `x,y` (two numbers), got 3 fields in `0.5,0.5,extra`",
         ),
-        (b"x,0.5\n0.25,0.75\n", "line 1: x = `x` is not a number"),
-        (b"0.5,0.5\nx,y\n", "line 2: x = `x` is not a number"),
+        (
+            b"x,0.5\n0.25,0.75\n",
+            "line 1, column 1: x = `x` is not a number",
+        ),
+        (
+            b"0.5,0.5\nx,y\n",
+            "line 2, column 1: x = `x` is not a number",
+        ),
         (
             b"\xef\xbb\xbf0.5\n",
-            "line 1: expected `x,y` (two numbers), got 1 fields",
+            "line 1, column 4: expected `x,y` (two numbers), got 1 fields",
         ),
         (
             b"x,y\n\n0.5,0.5\n1,0.5\n",
-            "line 4: x = 1 is outside [0, 1)",
+            "line 4, column 1: x = 1 is outside [0, 1)",
         ),
         (
             b"0.5,0.5\n0.5,-0.25\n",
-            "line 2: y = -0.25 is outside [0, 1)",
+            "line 2, column 5: y = -0.25 is outside [0, 1)",
         ),
         (
             b"0.5,0.5\n0.5,0.5\nNaN,0.5\n",
-            "line 3: x = NaN is not finite",
+            "line 3, column 1: x = NaN is not finite",
         ),
-        (b"0.5,inf\n", "line 1: y = inf is not finite"),
+        (b"0.5, inf\n", "line 1, column 6: y = inf is not finite"),
         (
             b"0.5,0.99999999\n",
-            "line 1: y = 0.99999999 rounds to 1 in f32",
+            "line 1, column 5: y = 0.99999999 rounds to 1 in f32",
         ),
-        (b"0.5,0.5\n0.5,0.5\n\xff,0.5\n", "line 3: not UTF-8 text"),
+        (
+            b"0.5,0.5\n0.5,0.5\n\xff,0.5\n",
+            "line 3, column 1: not UTF-8 text",
+        ),
+        (
+            b"0.5,0.5\n0.5,\xc3\xa9\xff\n",
+            "line 2, column 6: not UTF-8 text",
+        ),
+        // Below 1, but it rounds to 1 in f32 and f64 alike.
+        (
+            b"0.999999999999999999999,0.5\n",
+            "line 1, column 1: x = 0.999999999999999999999 rounds to 1 in f32",
+        ),
+        (
+            b"0.5,9.99999999e-1\n",
+            "line 1, column 5: y = 9.99999999e-1 rounds to 1",
+        ),
+        (
+            b"0.5,1.000000001\n",
+            "line 1, column 5: y = 1.000000001 is outside [0, 1)",
+        ),
+        (b"0.5,1e0\n", "line 1, column 5: y = 1e0 is outside [0, 1)"),
         (b"", "no points in the input"),
         (b"x,y\n\n", "no points in the input"),
     ];
@@ -269,4 +296,123 @@ fn help_lists_the_options_the_formats_and_the_exit_codes() {
             }
         }
     }
+}
+
+/// `count` copies of `pattern`, then `tail`, produced on the fly so that
+/// the test itself holds none of it.
+struct Repeat {
+    pattern: &'static [u8],
+    count: usize,
+    at: usize,
+    tail: &'static [u8],
+}
+
+impl std::io::Read for Repeat {
+    fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+        let mut written = 0;
+        while written < buf.len() {
+            let total = self.pattern.len() * self.count;
+            let byte = if self.at < total {
+                self.pattern[self.at % self.pattern.len()]
+            } else if let Some(&b) = self.tail.get(self.at - total) {
+                b
+            } else {
+                break;
+            };
+            buf[written] = byte;
+            written += 1;
+            self.at += 1;
+        }
+        Ok(written)
+    }
+}
+
+/// The peak resident memory of this test process so far, in bytes.
+#[cfg(target_os = "linux")]
+fn peak_rss() -> usize {
+    let status = std::fs::read_to_string("/proc/self/status").unwrap();
+    let line = status.lines().find(|l| l.starts_with("VmHWM:")).unwrap();
+    let kb: usize = line.split_whitespace().nth(1).unwrap().parse().unwrap();
+    kb * 1024
+}
+
+#[test]
+fn huge_lines_give_short_messages_in_bounded_memory() {
+    // A 100 MB field, and a line of 25 million fields (50 MB), each after a
+    // good line; neither is kept whole.
+    let cases: [(Repeat, &str); 3] = [
+        (
+            Repeat {
+                pattern: b"9",
+                count: 100_000_000,
+                at: 0,
+                tail: b"\n",
+            },
+            "line 1, column 1025: a line of 100000000 bytes, more than the 1024 allowed",
+        ),
+        (
+            Repeat {
+                pattern: b"0,",
+                count: 25_000_000,
+                at: 0,
+                tail: b"0\n0.5,0.5\n",
+            },
+            "line 1, column 1025: a line of 50000001 bytes",
+        ),
+        (
+            Repeat {
+                pattern: b"x",
+                count: 1000,
+                at: 0,
+                tail: b",0.5\n",
+            },
+            "line 1, column 1: x = `xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx...` is not a number",
+        ),
+    ];
+    for (mut input, expected) in cases {
+        let mut stdout = Vec::new();
+        let result = tool::main_with(std::iter::empty::<OsString>(), &mut input, &mut stdout);
+        let Err(tool::shared::Failure::Input(message)) = result else {
+            panic!("{expected}: {result:?}");
+        };
+        assert!(message.starts_with(expected), "{message}");
+        // The message quotes at most 80 characters of the input.
+        assert!(
+            message.len() < 300,
+            "{} bytes: {message:.300}",
+            message.len()
+        );
+    }
+    #[cfg(target_os = "linux")]
+    {
+        let peak = peak_rss();
+        assert!(peak < 64 << 20, "peak resident memory {} MB", peak >> 20);
+    }
+}
+
+#[test]
+fn a_field_that_fits_is_quoted_to_80_characters() {
+    let mut input = b"0.5,".to_vec();
+    input.extend(std::iter::repeat_n(b'7', 500));
+    input.extend(b"x\n");
+    let (status, _, err) = run(&[], &input);
+    assert_eq!(status, 2);
+    let expected = format!(
+        "metrics: line 1, column 5: y = `{}...` is not a number\n",
+        "7".repeat(80)
+    );
+    assert_eq!(err, expected);
+}
+
+#[test]
+fn a_long_bad_argument_is_quoted_to_80_characters() {
+    let long = format!("{}\nx4", "9".repeat(1000));
+    let (status, out, err) = run(&["--stratified", &long], b"0.5,0.5\n");
+    assert_eq!((status, out.as_str()), (2, ""));
+    assert_eq!(err.lines().count(), 1, "{err:?}");
+    assert!(
+        err.contains(&format!("\"{}...\" is not a grid", "9".repeat(80))),
+        "{err}"
+    );
+    assert!(err.len() < 300, "{} bytes", err.len());
 }

@@ -8,9 +8,10 @@
 //! `metric/min_distance_crowded` runs the minimum distances on the sets that
 //! crowd a bounding-box grid (the diagonal at 2^20 and 2^22, two lattice blobs
 //! of 724² points with spacing 2^-17) next to uniform points of the same
-//! size. `metric/wraparound_vs_scipy` prints the ratio of
-//! `scipy.stats.qmc.discrepancy(method="WD", workers=1)`'s time to ours at
-//! 2^14 points when `python3` can import scipy, and says it skipped otherwise.
+//! size. `metric/discrepancy_vs_scipy` prints the ratio of
+//! `scipy.stats.qmc.discrepancy(method=..., workers=1)`'s time to ours at
+//! 2^14 points for L2-star, centred and wrap-around L2, when `python3` can
+//! import scipy, and says it skipped otherwise.
 
 use std::hint::black_box;
 use std::process::Command;
@@ -189,9 +190,10 @@ fn spectrum(c: &mut Criterion) {
     group.finish();
 }
 
-/// Times scipy's wrap-around discrepancy (best of 5, one worker) on the same
-/// points, or `None` with the reason when python3 or scipy is missing.
-fn scipy_wd_seconds(points: &[Vec2]) -> Result<(f64, f64), String> {
+/// Times `scipy.stats.qmc.discrepancy(method=method)` (best of 5, one
+/// worker) on the same points: `(seconds, value)`, or the reason it could
+/// not run (no python3 or scipy).
+fn scipy_seconds(points: &[Vec2], method: &str) -> Result<(f64, f64), String> {
     let probe = Command::new("python3")
         .args(["-c", "import scipy"])
         .output();
@@ -199,7 +201,7 @@ fn scipy_wd_seconds(points: &[Vec2]) -> Result<(f64, f64), String> {
         Ok(out) if out.status.success() => {}
         _ => return Err("python3 with scipy not found (pip install scipy)".to_string()),
     }
-    let path = std::env::temp_dir().join(format!("wellspread-wd-{}.csv", std::process::id()));
+    let path = std::env::temp_dir().join(format!("wellspread-{method}-{}.csv", std::process::id()));
     // f64 text of the f32 values reads back exactly.
     let text: String = points
         .iter()
@@ -213,13 +215,14 @@ p = np.loadtxt(sys.argv[1], delimiter=',')
 best = float('inf')
 for _ in range(5):
     t = time.perf_counter()
-    v = qmc.discrepancy(p, method='WD', workers=1)
+    v = qmc.discrepancy(p, method=sys.argv[2], workers=1)
     best = min(best, time.perf_counter() - t)
 print(best, repr(float(v)))
 "#;
     let out = Command::new("python3")
         .args(["-c", script])
         .arg(&path)
+        .arg(method)
         .output();
     let _ = std::fs::remove_file(&path);
     let out = out.map_err(|e| format!("cannot run python3: {e}"))?;
@@ -239,38 +242,55 @@ print(best, repr(float(v)))
 
 fn versus_scipy(c: &mut Criterion) {
     let points = random_points(1 << 14);
-    let mut group = c.benchmark_group("metric/wraparound_vs_scipy");
+    let mut group = c.benchmark_group("metric/discrepancy_vs_scipy");
     group
         .sample_size(10)
         .warm_up_time(Duration::from_millis(300))
         .measurement_time(Duration::from_secs(1));
-    let report = Once::new();
-    group.bench_function("wellspread/16384", |b| {
-        report.call_once(|| {
-            let ours = (0..5)
-                .map(|_| {
-                    let start = Instant::now();
-                    black_box(metrics::wraparound_l2_discrepancy(black_box(&points)).unwrap());
-                    start.elapsed().as_secs_f64()
-                })
-                .fold(f64::INFINITY, f64::min);
-            let wd = metrics::wraparound_l2_discrepancy(&points).unwrap();
-            match scipy_wd_seconds(&points) {
-                // scipy returns WD squared.
-                Ok((theirs, wd2)) => println!(
-                    "wraparound L2 at 2^14, best of 5: wellspread {:.2} ms, scipy {:.1} ms, \
-                     ratio {:.1}; values {wd:e} and sqrt {:e} (rel. diff {:.1e})",
-                    ours * 1e3,
-                    theirs * 1e3,
-                    theirs / ours,
-                    wd2.sqrt(),
-                    (wd - wd2.sqrt()).abs() / wd
-                ),
-                Err(why) => println!("wraparound L2 versus scipy: skipped, {why}"),
-            }
+    // scipy's method name, ours, and whether scipy returns the square.
+    let methods: [(&str, Metric, bool); 3] = [
+        (
+            "L2-star",
+            |p| metrics::l2_star_discrepancy(p).unwrap(),
+            false,
+        ),
+        ("CD", |p| metrics::centered_l2_discrepancy(p).unwrap(), true),
+        (
+            "WD",
+            |p| metrics::wraparound_l2_discrepancy(p).unwrap(),
+            true,
+        ),
+    ];
+    for (method, metric, squared) in methods {
+        let report = Once::new();
+        group.bench_function(format!("{method}/16384"), |b| {
+            report.call_once(|| {
+                let ours = (0..5)
+                    .map(|_| {
+                        let start = Instant::now();
+                        black_box(metric(black_box(&points)));
+                        start.elapsed().as_secs_f64()
+                    })
+                    .fold(f64::INFINITY, f64::min);
+                let value = metric(&points);
+                match scipy_seconds(&points, method) {
+                    Ok((theirs, v)) => {
+                        let v = if squared { v.sqrt() } else { v };
+                        println!(
+                            "{method} at 2^14, best of 5: wellspread {:.2} ms, scipy {:.1} ms, \
+                             ratio {:.1}; values {value:e} and {v:e} (rel. diff {:.1e})",
+                            ours * 1e3,
+                            theirs * 1e3,
+                            theirs / ours,
+                            (value - v).abs() / value
+                        )
+                    }
+                    Err(why) => println!("{method} versus scipy: skipped, {why}"),
+                }
+            });
+            b.iter(|| metric(black_box(&points)))
         });
-        b.iter(|| metrics::wraparound_l2_discrepancy(black_box(&points)).unwrap())
-    });
+    }
     group.finish();
 }
 

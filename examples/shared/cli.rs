@@ -13,7 +13,7 @@ use std::fmt;
 use std::io::{self, Write};
 use std::process::ExitCode;
 
-use clap::error::ErrorKind;
+use clap::error::{ContextKind, ErrorKind};
 use wellspread::SamplerKind;
 
 /// The exit codes, for the end of every tool's `--help`.
@@ -99,8 +99,15 @@ pub fn parse<P: clap::Parser>(
 
 /// A clap error as one line: its first paragraph (the message and, for
 /// missing arguments, their names) without `error: `, plus a pointer to
-/// `--help`.
+/// `--help`. A value our parser rejected is reported by our message alone,
+/// which quotes at most 80 characters of it (clap's own would quote all).
 fn one_line(error: &clap::Error) -> String {
+    if error.kind() == ErrorKind::ValueValidation {
+        let arg = error.get(ContextKind::InvalidArg);
+        if let (Some(arg), Some(reason)) = (arg, std::error::Error::source(error)) {
+            return format!("{arg}: {reason} (try --help)");
+        }
+    }
     let text = error.to_string();
     let words: Vec<&str> = text
         .lines()
@@ -110,6 +117,16 @@ fn one_line(error: &clap::Error) -> String {
     let message = words.join(" ");
     let message = message.strip_prefix("error: ").unwrap_or(&message);
     format!("{message} (try --help)")
+}
+
+/// `text` quoted and escaped as a Rust string (so a newline cannot split a
+/// one-line message), cut to its first 80 characters with `...` inside the
+/// quotes if longer.
+pub fn quoted(text: &str) -> String {
+    match text.char_indices().nth(80) {
+        Some((cut, _)) => format!("{:?}", format!("{}...", &text[..cut])),
+        None => format!("{text:?}"),
+    }
 }
 
 /// The sampler names, space-separated, for help texts.
@@ -128,7 +145,8 @@ pub fn sampler_kind(name: &str) -> Result<SamplerKind, String> {
             ""
         };
         format!(
-            "unknown sampler {name:?}{hint}; expected one of: {}",
+            "unknown sampler {}{hint}; expected one of: {}",
+            quoted(name),
             sampler_names()
         )
     })
@@ -162,7 +180,7 @@ pub fn list<T: PartialEq>(
     let mut list = Vec::new();
     for (number, part) in (1..).zip(&parts) {
         let at = if parts.len() > 1 {
-            format!("item {number} of {value:?}: ")
+            format!("item {number} of {}: ", quoted(value))
         } else {
             String::new()
         };
@@ -185,7 +203,8 @@ pub fn u32_dec_or_hex(text: &str) -> Result<u32, String> {
     };
     parsed.ok_or_else(|| {
         format!(
-            "{text:?} is not a number from 0 to {} (decimal or 0x hex)",
+            "{} is not a number from 0 to {} (decimal or 0x hex)",
+            quoted(text),
             u32::MAX
         )
     })
@@ -194,6 +213,11 @@ pub fn u32_dec_or_hex(text: &str) -> Result<u32, String> {
 /// A decimal `u32`, for clap's `value_parser` (clap's own message for a
 /// bad `u32` does not say the range).
 pub fn whole_number(text: &str) -> Result<u32, String> {
-    text.parse()
-        .map_err(|_| format!("{text:?} is not a whole number from 0 to {}", u32::MAX))
+    text.parse().map_err(|_| {
+        format!(
+            "{} is not a whole number from 0 to {}",
+            quoted(text),
+            u32::MAX
+        )
+    })
 }

@@ -36,9 +36,7 @@ use crate::Error;
 /// radix sort of 64-bit keys (six linear passes), so the worst case is within
 /// O(n log n), in fact linear, for sets whose closest pair is at least 2^-31
 /// of their bounding box apart (below that the z-order cannot see the pair and
-/// the pass may compare more pairs; the result stays exact). Measured at 2^20
-/// points, the diagonal and two dense lattice blobs take 2 to 3 times as long
-/// as uniform points (see `docs/metrics.md`).
+/// the pass may compare more pairs; the result stays exact).
 ///
 /// # Errors
 ///
