@@ -134,7 +134,7 @@ pub mod warp;
 
 pub use error::{Error, InputText};
 pub use pixel::{
-    AnyPixelSampler, Domain, DomainSampler, Draw, Padded, PixelCursor, PixelSampler,
+    AnyPixelSampler, BlueNoise, Domain, DomainSampler, Draw, Padded, PixelCursor, PixelSampler,
     PixelSamplerKind, Root, ZSobol,
 };
 pub use primitives::pattern_seed;

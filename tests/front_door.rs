@@ -25,6 +25,9 @@ fn every_relative_link_in_the_readme_and_docs_exists() {
         "docs/tracer.md",
         "docs/quality.md",
         "docs/performance.md",
+        "docs/metrics.md",
+        "docs/zsobol.md",
+        "docs/blue_noise.md",
     ] {
         let dir = root.join(page).parent().unwrap().to_owned();
         let text = read(page);
@@ -51,6 +54,7 @@ fn docs_pages_start_with_their_regeneration_command_and_machine() {
         ("docs/performance.md", "cargo bench --bench speed -- ratio"),
         ("docs/metrics.md", "cargo bench --bench speed --"),
         ("docs/zsobol.md", "cargo run --release --example tracer --"),
+        ("docs/blue_noise.md", "cargo run --release --example blue_noise --"),
     ] {
         let text = read(page);
         let head: String = text.lines().take(16).collect::<Vec<_>>().join("\n");

@@ -6,7 +6,7 @@ use core::str::FromStr;
 
 use glam::{Vec2, Vec3, Vec4};
 
-use super::{Draw, Padded, PixelSampler, Root, ZSobol};
+use super::{BlueNoise, Draw, Padded, PixelSampler, Root, ZSobol};
 use crate::error::InputText;
 use crate::{AnySampler, Error, SamplerKind};
 
@@ -28,10 +28,11 @@ pub(crate) const ALIASES_TEXT: &str =
     "cmj, mj, pmj, rooks, latin-hypercube, lhs, stratified, white";
 
 /// Every pixel sampler wellspread offers: [`Padded`] over each
-/// [`SamplerKind`], and [`ZSobol`].
+/// [`SamplerKind`], [`ZSobol`] and [`BlueNoise`].
 ///
 /// Names are the README's: a [`SamplerKind`] name (`"sobol"`,
-/// `"correlated-multi-jittered"`, ...) for its padded form, and `"zsobol"`.
+/// `"correlated-multi-jittered"`, ...) for its padded form, `"zsobol"` and
+/// `"blue-noise"`.
 /// Parsing ignores case, `-`, `_` and spaces, and accepts the short
 /// aliases `cmj`, `mj`, `pmj`, `rooks`, `latin-hypercube`, `lhs`,
 /// `stratified` and `white`.
@@ -48,13 +49,17 @@ pub(crate) const ALIASES_TEXT: &str =
 /// assert!(PixelSamplerKind::all().count() > SamplerKind::ALL.len());
 /// # Ok::<(), wellspread::Error>(())
 /// ```
+///
+/// Not `#[non_exhaustive]`, like [`SamplerKind`]: a `match` over the kinds
+/// fails to compile until a new pixel sampler has its line.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-#[non_exhaustive]
 pub enum PixelSamplerKind {
     /// [`Padded`] over a sampler of this kind.
     Padded(SamplerKind),
     /// [`ZSobol`].
     ZSobol,
+    /// [`BlueNoise`].
+    BlueNoise,
 }
 
 impl PixelSamplerKind {
@@ -64,22 +69,24 @@ impl PixelSamplerKind {
         SamplerKind::ALL
             .iter()
             .map(|&kind| PixelSamplerKind::Padded(kind))
-            .chain(core::iter::once(PixelSamplerKind::ZSobol))
+            .chain([PixelSamplerKind::ZSobol, PixelSamplerKind::BlueNoise])
     }
 
-    /// The name tools use: the [`SamplerKind`] name, or `"zsobol"`.
+    /// The name tools use: the [`SamplerKind`] name, `"zsobol"` or
+    /// `"blue-noise"`.
     #[must_use]
     pub const fn name(self) -> &'static str {
         match self {
             PixelSamplerKind::Padded(kind) => kind.name(),
             PixelSamplerKind::ZSobol => "zsobol",
+            PixelSamplerKind::BlueNoise => "blue-noise",
         }
     }
 
     /// The pixel sampler for `samples_per_pixel` samples on a
     /// `resolution = [width, height]` film, `frame` picking its
     /// randomisation. Padded samplers ignore the resolution (any pixel is
-    /// valid); ZSobol needs it.
+    /// valid); ZSobol and BlueNoise key their pixel order by it.
     ///
     /// # Errors
     ///
@@ -98,6 +105,9 @@ impl PixelSamplerKind {
             }
             PixelSamplerKind::ZSobol => {
                 AnyPixelSampler::ZSobol(ZSobol::new(samples_per_pixel, resolution, frame)?)
+            }
+            PixelSamplerKind::BlueNoise => {
+                AnyPixelSampler::BlueNoise(BlueNoise::new(samples_per_pixel, resolution, frame)?)
             }
         })
     }
@@ -180,12 +190,13 @@ impl FromStr for PixelSamplerKind {
 /// can live in a thread-local or be passed by value. Made by
 /// [`PixelSamplerKind::build`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-#[non_exhaustive]
 pub enum AnyPixelSampler {
     /// A padded [`AnySampler`].
     Padded(Padded<AnySampler>),
     /// A [`ZSobol`].
     ZSobol(ZSobol),
+    /// A [`BlueNoise`].
+    BlueNoise(BlueNoise),
 }
 
 impl AnyPixelSampler {
@@ -195,6 +206,7 @@ impl AnyPixelSampler {
         match self {
             AnyPixelSampler::Padded(p) => PixelSamplerKind::Padded(p.sampler().kind()),
             AnyPixelSampler::ZSobol(_) => PixelSamplerKind::ZSobol,
+            AnyPixelSampler::BlueNoise(_) => PixelSamplerKind::BlueNoise,
         }
     }
 }
@@ -205,6 +217,7 @@ impl PixelSampler for AnyPixelSampler {
         match self {
             AnyPixelSampler::Padded(s) => s.samples_per_pixel(),
             AnyPixelSampler::ZSobol(s) => s.samples_per_pixel(),
+            AnyPixelSampler::BlueNoise(s) => s.samples_per_pixel(),
         }
     }
     #[inline]
@@ -212,6 +225,7 @@ impl PixelSampler for AnyPixelSampler {
         match self {
             AnyPixelSampler::Padded(s) => s.sample_pixel(pixel, index, dimension),
             AnyPixelSampler::ZSobol(s) => s.sample_pixel(pixel, index, dimension),
+            AnyPixelSampler::BlueNoise(s) => s.sample_pixel(pixel, index, dimension),
         }
     }
     #[inline]
@@ -219,6 +233,7 @@ impl PixelSampler for AnyPixelSampler {
         match self {
             AnyPixelSampler::Padded(s) => s.root(pixel),
             AnyPixelSampler::ZSobol(s) => s.root(pixel),
+            AnyPixelSampler::BlueNoise(s) => s.root(pixel),
         }
     }
     #[inline]
@@ -226,6 +241,7 @@ impl PixelSampler for AnyPixelSampler {
         match self {
             AnyPixelSampler::Padded(s) => s.locate(index, key),
             AnyPixelSampler::ZSobol(s) => s.locate(index, key),
+            AnyPixelSampler::BlueNoise(s) => s.locate(index, key),
         }
     }
     #[inline]
@@ -233,6 +249,7 @@ impl PixelSampler for AnyPixelSampler {
         match self {
             AnyPixelSampler::Padded(s) => s.draw_1d(draw),
             AnyPixelSampler::ZSobol(s) => s.draw_1d(draw),
+            AnyPixelSampler::BlueNoise(s) => s.draw_1d(draw),
         }
     }
     #[inline]
@@ -240,6 +257,7 @@ impl PixelSampler for AnyPixelSampler {
         match self {
             AnyPixelSampler::Padded(s) => s.draw_2d(draw),
             AnyPixelSampler::ZSobol(s) => s.draw_2d(draw),
+            AnyPixelSampler::BlueNoise(s) => s.draw_2d(draw),
         }
     }
     #[inline]
@@ -247,6 +265,7 @@ impl PixelSampler for AnyPixelSampler {
         match self {
             AnyPixelSampler::Padded(s) => s.draw_3d(draw),
             AnyPixelSampler::ZSobol(s) => s.draw_3d(draw),
+            AnyPixelSampler::BlueNoise(s) => s.draw_3d(draw),
         }
     }
     #[inline]
@@ -254,6 +273,7 @@ impl PixelSampler for AnyPixelSampler {
         match self {
             AnyPixelSampler::Padded(s) => s.draw_4d(draw),
             AnyPixelSampler::ZSobol(s) => s.draw_4d(draw),
+            AnyPixelSampler::BlueNoise(s) => s.draw_4d(draw),
         }
     }
 }

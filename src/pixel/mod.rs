@@ -4,6 +4,7 @@
 //! [`Domain`], that hands out draws of one to four dimensions and derives
 //! keyed child domains.
 
+mod blue_noise;
 mod domain;
 mod kind;
 mod padded;
@@ -11,6 +12,7 @@ mod zsobol;
 
 use glam::{Vec2, Vec3, Vec4};
 
+pub use blue_noise::BlueNoise;
 pub use domain::Domain;
 pub(crate) use kind::ALIASES_TEXT;
 pub use kind::{AnyPixelSampler, PixelSamplerKind};

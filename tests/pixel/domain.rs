@@ -28,6 +28,7 @@ fn needs_power_of_two(kind: PixelSamplerKind) -> bool {
         kind,
         PixelSamplerKind::Padded(SamplerKind::Sobol | SamplerKind::Pmj02 | SamplerKind::Halton)
             | PixelSamplerKind::ZSobol
+            | PixelSamplerKind::BlueNoise
     )
 }
 
@@ -142,10 +143,16 @@ proptest! {
             let mut a = d.branch(key);
             let mut b = d.branch(key.wrapping_add(1));
             let (pa, pb) = (a.next_4d(), b.next_4d());
-            prop_assert_ne!(pa, pb, "{} siblings", kind);
-            // Regular's sets are one grid in a random order: equal points
-            // are no sign of a shared pattern there.
-            if kind != PixelSamplerKind::Padded(SamplerKind::Regular) {
+            if kind == PixelSamplerKind::Padded(SamplerKind::Regular) {
+                // Regular's sets are one grid in a random order, so two
+                // siblings share a point with probability 1/256: compare
+                // their whole orders over the pixel's 16 samples instead.
+                let order = |key: u32| -> Vec<Vec4> {
+                    (0..16).map(|i| sampler.start(pixel, i).branch(key).next_4d()).collect()
+                };
+                prop_assert_ne!(order(key), order(key.wrapping_add(1)), "{} siblings", kind);
+            } else {
+                prop_assert_ne!(pa, pb, "{} siblings", kind);
                 let mut root = sampler.start(pixel, index);
                 prop_assert_ne!(root.next_2d(), Vec2::new(pa.x, pa.y), "{} parent", kind);
             }
@@ -356,7 +363,7 @@ fn every_pixel_sampler_parses_by_name_alias_and_any_case() {
         let sampler = kind.build(16, [32, 32], 0).unwrap();
         assert_eq!(sampler.kind(), kind);
     }
-    assert_eq!(PixelSamplerKind::all().count(), SamplerKind::ALL.len() + 1);
+    assert_eq!(PixelSamplerKind::all().count(), SamplerKind::ALL.len() + 2);
     for (alias, kind) in [
         ("cmj", SamplerKind::CorrelatedMultiJittered),
         ("MJ", SamplerKind::MultiJittered),
