@@ -54,7 +54,10 @@ fn docs_pages_start_with_their_regeneration_command_and_machine() {
         ("docs/performance.md", "cargo bench --bench speed -- ratio"),
         ("docs/metrics.md", "cargo bench --bench speed --"),
         ("docs/zsobol.md", "cargo run --release --example tracer --"),
-        ("docs/blue_noise.md", "cargo run --release --example blue_noise --"),
+        (
+            "docs/blue_noise.md",
+            "cargo run --release --example blue_noise --",
+        ),
     ] {
         let text = read(page);
         let head: String = text.lines().take(16).collect::<Vec<_>>().join("\n");
