@@ -157,8 +157,9 @@ pub struct Strata {
     pub rooks: bool,
 }
 
-/// The strata of each sampler; a sampler without a line here is drawn as
-/// bare points.
+/// The strata of each sampler. The sequences and `random` have no grid to
+/// draw: their points are drawn bare. Every kind has its line, so a new
+/// kind is a compile error here until it says what to draw.
 pub fn strata(sampler: &AnySampler) -> Strata {
     let (coarse, rooks) = match sampler {
         AnySampler::Regular(s) => (Some((s.columns(), s.rows())), false),
@@ -167,7 +168,11 @@ pub fn strata(sampler: &AnySampler) -> Strata {
         AnySampler::MultiJittered(s) => (Some((s.columns(), s.rows())), true),
         AnySampler::CorrelatedMultiJittered(s) => (Some((s.columns(), s.rows())), true),
         AnySampler::BlueMultiJittered(s) => (Some((s.columns(), s.rows())), true),
-        _ => (None, false),
+        AnySampler::Random(_)
+        | AnySampler::Hammersley(_)
+        | AnySampler::Halton(_)
+        | AnySampler::Sobol(_)
+        | AnySampler::Pmj02(_) => (None, false),
     };
     Strata { coarse, rooks }
 }

@@ -726,7 +726,7 @@ pub fn luminance([r, g, b]: Rgb) -> f32 {
 mod tests {
     use std::time::Instant;
 
-    use wellspread::{Padded, SamplerKind, Sobol};
+    use wellspread::{Padded, PixelSamplerKind, SamplerKind, Sobol};
 
     use super::*;
     use crate::render::TracerSampler;
@@ -825,9 +825,11 @@ mod tests {
         let (one, two) = (pool(1), pool(2));
         let (width, height) = (24, 20);
         for kind in [
-            TracerSampler::Padded(SamplerKind::Sobol),
-            TracerSampler::Padded(SamplerKind::CorrelatedMultiJittered),
-            TracerSampler::ZSobol,
+            TracerSampler::Pixel(PixelSamplerKind::Padded(SamplerKind::Sobol)),
+            TracerSampler::Pixel(PixelSamplerKind::Padded(
+                SamplerKind::CorrelatedMultiJittered,
+            )),
+            TracerSampler::Pixel(PixelSamplerKind::ZSobol),
         ] {
             let sampler = kind.build(16, width, height, 3).unwrap();
             let a = one.install(|| render_cornell(width, height, 16, &Pairs(&sampler)));

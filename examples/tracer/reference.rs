@@ -11,6 +11,9 @@
 //!   against the pixel, for every pixel whose footprint meets at most 10^4
 //!   squares. The few rows just below the horizon (and the horizon row,
 //!   which sees squares out to infinity) are sampled densely, as below.
+//! - `cornell` (box filter only): 4096 Sobol' samples per pixel through
+//!   domains that no compared frame uses (`path.rs`), cached in a file named
+//!   after a fingerprint of the path tracer.
 //! - anything else (`checker` and `polygon` under a wide filter): the render
 //!   itself with 4096 correlated multi-jittered samples per pixel (64 x 64
 //!   strata) on a pattern dimension no compared image uses, 16 times the
@@ -27,8 +30,9 @@ use std::path::{Path, PathBuf};
 use rayon::prelude::*;
 use wellspread::{AnySampler, Padded, SamplerKind};
 
+use crate::path;
 use crate::render::{Filter, Image, REFERENCE_DIMENSION, box_pixel, render};
-use crate::scenes::{Checker, Moire, Polygon, Scene, SceneKind};
+use crate::scenes::{Built, Checker, Moire, Polygon, Scene, SceneKind};
 
 /// Samples per pixel for Monte Carlo references: 16 times the largest
 /// default count (a larger `--spp` outgrows the reference's accuracy).
@@ -55,16 +59,25 @@ pub fn cache_path(
 pub fn load_or_compute(
     out: &Path,
     kind: SceneKind,
-    scene: &Scene,
+    scene: &Built,
     width: u32,
     height: u32,
     filter: Filter,
 ) -> io::Result<(Image, bool)> {
-    let path = cache_path(out, kind, width, height, filter);
+    let path = match scene {
+        Built::Film(_) => cache_path(out, kind, width, height, filter),
+        Built::PathTraced => out.join(format!(
+            "reference-{kind}-{width}x{height}-{filter}-{:08x}.bin",
+            path::fingerprint()
+        )),
+    };
     if let Some(image) = read_cache(&path, width, height) {
         return Ok((image, false));
     }
-    let image = compute(scene, width, height, filter);
+    let image = match scene {
+        Built::Film(scene) => compute(scene, width, height, filter),
+        Built::PathTraced => path::reference(width, height),
+    };
     write_cache(&path, &image)?;
     Ok((image, true))
 }
@@ -312,8 +325,8 @@ mod tests {
         // The bottom-left pixels are well below Nyquist: a 64 x 64 midpoint
         // rule there must agree with the quadrature to a few 1e-4.
         let (width, height) = (32, 32);
-        let scene = SceneKind::Moire.build(width, height);
-        let Scene::Moire(moire) = &scene else {
+        let scene = SceneKind::Moire.film(width, height);
+        let Some(Scene::Moire(moire)) = &scene else {
             unreachable!()
         };
         for filter in Filter::ALL {

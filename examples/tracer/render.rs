@@ -10,10 +10,10 @@ use std::fmt;
 use std::str::FromStr;
 
 use rayon::prelude::*;
-use wellspread::glam::Vec2;
-use wellspread::{AnySampler, Padded, PixelSampler, SamplerKind, ZSobol};
+use wellspread::{AnyPixelSampler, PixelSampler, PixelSamplerKind, SamplerKind};
 
-use crate::scenes::{Rgb, Scene};
+use crate::path::FilmLens;
+use crate::scenes::{Rgb, Scene, SceneKind};
 
 /// A linear-RGB image, row-major, row 0 at the top.
 #[derive(Clone, Debug, PartialEq)]
@@ -136,33 +136,55 @@ impl FromStr for Filter {
     }
 }
 
-/// A sampler as the command line names it: one of the library's
-/// [`SamplerKind`]s, padded across pixels with [`Padded`], or `zsobol`.
+/// A sampler as the command line names it: one of the library's pixel
+/// samplers ([`PixelSamplerKind::all`], so a new one appears here by
+/// itself), or `sobol-pairs`, the control of the path-traced scene's
+/// 4D-versus-pairs comparison.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum TracerSampler {
-    /// `Padded::new(kind.build(spp), seed)`: an independent pattern per
-    /// pixel, white-noise error across pixels.
-    Padded(SamplerKind),
-    /// [`ZSobol`]: blue-noise error across pixels.
-    ZSobol,
+    /// `kind.build(spp, [width, height], seed)`. In the path-traced scene
+    /// its film offset and lens point are one `next_4d` draw.
+    Pixel(PixelSamplerKind),
+    /// `sobol` with the path-traced scene's film offset and lens point
+    /// drawn as two `next_2d` pairs. The 2D scenes draw no lens, where it
+    /// would be `sobol` again, so it renders only the path-traced one.
+    SobolPairs,
 }
+
+/// `sobol`, the pixel sampler both sides of the 4D-versus-pairs rows use.
+pub const SOBOL: TracerSampler = TracerSampler::Pixel(PixelSamplerKind::Padded(SamplerKind::Sobol));
 
 impl TracerSampler {
     /// Every sampler, in the order tables list them.
     pub fn all() -> Vec<TracerSampler> {
-        let mut all: Vec<TracerSampler> = SamplerKind::ALL
-            .iter()
-            .map(|&kind| TracerSampler::Padded(kind))
-            .collect();
-        all.push(TracerSampler::ZSobol);
-        all
+        PixelSamplerKind::all()
+            .map(TracerSampler::Pixel)
+            .chain([TracerSampler::SobolPairs])
+            .collect()
     }
 
     /// The command-line name.
     pub fn name(self) -> &'static str {
         match self {
-            TracerSampler::Padded(kind) => kind.name(),
-            TracerSampler::ZSobol => "zsobol",
+            TracerSampler::Pixel(kind) => kind.name(),
+            TracerSampler::SobolPairs => "sobol-pairs",
+        }
+    }
+
+    /// How the path-traced scene draws its film offset and lens point.
+    pub fn film_lens(self) -> FilmLens {
+        match self {
+            TracerSampler::Pixel(_) => FilmLens::Joint,
+            TracerSampler::SobolPairs => FilmLens::Pairs,
+        }
+    }
+
+    /// Whether `scene` renders with this sampler: every scene but
+    /// `sobol-pairs`, which differs from `sobol` only in the lens.
+    pub fn renders(self, scene: SceneKind) -> bool {
+        match self {
+            TracerSampler::Pixel(_) => true,
+            TracerSampler::SobolPairs => scene.has_lens(),
         }
     }
 
@@ -174,13 +196,12 @@ impl TracerSampler {
         width: u32,
         height: u32,
         seed: u32,
-    ) -> Result<FrameSampler, wellspread::Error> {
-        Ok(match self {
-            TracerSampler::Padded(kind) => {
-                FrameSampler::Padded(Padded::new(kind.build(spp)?, seed))
-            }
-            TracerSampler::ZSobol => FrameSampler::ZSobol(ZSobol::new(spp, [width, height], seed)?),
-        })
+    ) -> Result<AnyPixelSampler, wellspread::Error> {
+        let kind = match self {
+            TracerSampler::Pixel(kind) => kind,
+            TracerSampler::SobolPairs => PixelSamplerKind::Padded(SamplerKind::Sobol),
+        };
+        kind.build(spp, [width, height], seed)
     }
 }
 
@@ -193,41 +214,21 @@ impl fmt::Display for TracerSampler {
 impl FromStr for TracerSampler {
     type Err = String;
 
+    /// A name from [`TracerSampler::all`], or any name or alias the
+    /// library's [`PixelSamplerKind`] parses (any case, `cmj`, ...).
     fn from_str(name: &str) -> Result<Self, Self::Err> {
-        if name == "zsobol" {
-            return Ok(TracerSampler::ZSobol);
+        if name == TracerSampler::SobolPairs.name() {
+            return Ok(TracerSampler::SobolPairs);
         }
-        match name.parse::<SamplerKind>() {
-            Ok(kind) => Ok(TracerSampler::Padded(kind)),
-            Err(e) => Err(format!("{e} zsobol")),
-        }
-    }
-}
-
-/// The pixel sampler of one frame, with static dispatch.
-#[derive(Clone, Copy, Debug)]
-pub enum FrameSampler {
-    /// A library sampler, padded.
-    Padded(Padded<AnySampler>),
-    /// ZSobol.
-    ZSobol(ZSobol),
-}
-
-impl PixelSampler for FrameSampler {
-    #[inline]
-    fn samples_per_pixel(&self) -> Option<u32> {
-        match self {
-            FrameSampler::Padded(s) => s.samples_per_pixel(),
-            FrameSampler::ZSobol(s) => s.samples_per_pixel(),
-        }
-    }
-
-    #[inline]
-    fn sample_pixel(&self, pixel: [u32; 2], index: u32, dimension: u32) -> Vec2 {
-        match self {
-            FrameSampler::Padded(s) => s.sample_pixel(pixel, index, dimension),
-            FrameSampler::ZSobol(s) => s.sample_pixel(pixel, index, dimension),
-        }
+        name.parse::<PixelSamplerKind>()
+            .map(TracerSampler::Pixel)
+            .map_err(|_| {
+                let names: Vec<&str> = TracerSampler::all().iter().map(|s| s.name()).collect();
+                format!(
+                    "unknown sampler {name:?}; expected one of: {} (any case; aliases such as cmj)",
+                    names.join(" ")
+                )
+            })
     }
 }
 
@@ -271,21 +272,22 @@ pub fn render<P: PixelSampler>(
     }
 }
 
-/// The sample positions of pixel `(px, py)` in film coordinates, one at a
-/// time: the library's O(1) random access means no per-pixel buffer.
+/// The samples of pixel `(px, py)`, one at a time: each one's film
+/// position (in pixels) and the radiance the scene sends there. The
+/// library's O(1) random access means no per-pixel buffer.
 #[inline]
-fn pixel_positions<P: PixelSampler>(
-    sampler: &P,
+fn pixel_samples<'a, P: PixelSampler>(
+    scene: &'a Scene,
+    sampler: &'a P,
     dimension: u32,
     px: u32,
     py: u32,
-) -> impl Iterator<Item = (f64, f64)> + '_ {
+) -> impl Iterator<Item = (f64, f64, Rgb)> + 'a {
     (0..spp(sampler)).map(move |index| {
         let offset = sampler.sample_pixel([px, py], index, dimension);
-        (
-            f64::from(px) + f64::from(offset.x),
-            f64::from(py) + f64::from(offset.y),
-        )
+        let x = f64::from(px) + f64::from(offset.x);
+        let y = f64::from(py) + f64::from(offset.y);
+        (x, y, scene.radiance(x, y))
     })
 }
 
@@ -319,8 +321,7 @@ pub fn box_pixel<P: PixelSampler>(
     py: u32,
 ) -> Rgb {
     let mut sum = [0.0f64; 3];
-    for (x, y) in pixel_positions(sampler, dimension, px, py) {
-        let radiance = scene.radiance(x, y);
+    for (_, _, radiance) in pixel_samples(scene, sampler, dimension, px, py) {
         for c in 0..3 {
             sum[c] += f64::from(radiance[c]);
         }
@@ -366,8 +367,9 @@ fn render_filtered<P: PixelSampler>(
             let last_row = (band_y0 + band_rows - 1 + margin).min(i64::from(height) - 1);
             for sy in first_row..=last_row {
                 for sx in 0..width {
-                    for (x, y) in pixel_positions(sampler, dimension, sx, sy as u32) {
-                        let radiance = scene.radiance(x, y).map(f64::from);
+                    for (x, y, radiance) in pixel_samples(scene, sampler, dimension, sx, sy as u32)
+                    {
+                        let radiance = radiance.map(f64::from);
                         // Pixels whose centre (p + 1/2) is within the radius.
                         let x_lo = ((x - 0.5 - radius).floor() as i64 + 1).max(0);
                         let x_hi = ((x - 0.5 + radius).ceil() as i64 - 1).min(i64::from(width) - 1);
@@ -426,12 +428,17 @@ mod tests {
         // 40 rows make three bands, so the wide filters' band seams are
         // exercised too.
         let (width, height) = (24, 40);
+        // The path-traced scene has its own test, in path.rs.
         for scene_kind in SceneKind::ALL {
-            let scene = scene_kind.build(width, height);
+            let Some(scene) = scene_kind.film(width, height) else {
+                continue;
+            };
             for filter in Filter::ALL {
                 for kind in [
-                    TracerSampler::Padded(SamplerKind::CorrelatedMultiJittered),
-                    TracerSampler::ZSobol,
+                    TracerSampler::Pixel(PixelSamplerKind::Padded(
+                        SamplerKind::CorrelatedMultiJittered,
+                    )),
+                    TracerSampler::Pixel(PixelSamplerKind::ZSobol),
                 ] {
                     let sampler = kind.build(16, width, height, 7).unwrap();
                     let a = one.install(|| render(&scene, width, height, &sampler, 0, filter));
@@ -465,8 +472,8 @@ mod tests {
     #[test]
     fn box_render_of_a_constant_region_is_exact() {
         // Inside the 64 x 64 polygon, every sample sees yellow.
-        let scene = SceneKind::Polygon.build(64, 64);
-        let sampler = TracerSampler::Padded(SamplerKind::Random)
+        let scene = SceneKind::Polygon.film(64, 64).unwrap();
+        let sampler = TracerSampler::Pixel(PixelSamplerKind::Padded(SamplerKind::Random))
             .build(4, 64, 64, 0)
             .unwrap();
         let image = render(&scene, 64, 64, &sampler, FILM_DIMENSION, Filter::Box);
@@ -480,20 +487,46 @@ mod sampler_tests {
 
     #[test]
     fn names_round_trip_and_bad_names_are_named() {
-        for kind in TracerSampler::all() {
-            assert_eq!(kind.name().parse::<TracerSampler>(), Ok(kind));
+        let all = TracerSampler::all();
+        for kind in &all {
+            assert_eq!(kind.name().parse::<TracerSampler>(), Ok(*kind));
         }
-        let message = " jittered".parse::<TracerSampler>().unwrap_err();
-        assert!(message.contains("\" jittered\""), "{message}");
-        assert!(message.ends_with("pmj02 zsobol"), "{message}");
+        // Every pixel sampler of the library, each once, then sobol-pairs.
+        let pixel: Vec<TracerSampler> = PixelSamplerKind::all().map(TracerSampler::Pixel).collect();
+        assert_eq!(all[..pixel.len()], pixel[..]);
+        assert_eq!(all[pixel.len()..], [TracerSampler::SobolPairs]);
+        // The library's aliases and case.
+        assert_eq!(
+            "CMJ".parse(),
+            Ok(TracerSampler::Pixel(PixelSamplerKind::Padded(
+                SamplerKind::CorrelatedMultiJittered
+            )))
+        );
+        let message = "jitterd".parse::<TracerSampler>().unwrap_err();
+        assert!(message.contains("\"jitterd\""), "{message}");
+        let names: Vec<&str> = all.iter().map(|s| s.name()).collect();
+        assert!(message.contains(&names.join(" ")), "{message}");
+    }
+
+    #[test]
+    fn sobol_pairs_renders_only_where_there_is_a_lens() {
+        for scene in SceneKind::ALL {
+            assert_eq!(TracerSampler::SobolPairs.renders(scene), scene.has_lens());
+            assert!(SOBOL.renders(scene));
+        }
+        assert_eq!(TracerSampler::SobolPairs.film_lens(), FilmLens::Pairs);
+        assert_eq!(SOBOL.film_lens(), FilmLens::Joint);
+        // Both build the same pixel sampler.
+        assert_eq!(
+            TracerSampler::SobolPairs.build(16, 4, 4, 2),
+            SOBOL.build(16, 4, 4, 2)
+        );
     }
 
     #[test]
     fn padded_kinds_use_the_library_adapter() {
-        let sampler = TracerSampler::Padded(SamplerKind::Sobol)
-            .build(4, 8, 8, 3)
-            .unwrap();
-        let expected = Padded::new(SamplerKind::Sobol.build(4).unwrap(), 3);
+        let sampler = SOBOL.build(4, 8, 8, 3).unwrap();
+        let expected = wellspread::Padded::new(SamplerKind::Sobol.build(4).unwrap(), 3);
         assert_eq!(
             sampler.sample_pixel([2, 5], 1, 0),
             expected.sample_pixel([2, 5], 1, 0)

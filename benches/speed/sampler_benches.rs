@@ -9,7 +9,7 @@
 //!   (a peer with O(1) random access);
 //! - `any/<sampler>`: every kind in `SamplerKind::ALL` through `AnySampler`;
 //! - `concrete/<sampler>`: the same sampler as its own type (generic code, no
-//!   match), for the kinds this file knows, to show what the match costs.
+//!   match), for every kind, to show what the match costs.
 //!
 //! Groups: `fill/<n>` (one whole set), `sample-sequential/<n>` (`sample(i, p)`
 //! for i in 0..n, one pattern) and `sample-scattered/<n>` (indices and
@@ -46,12 +46,14 @@ pub(crate) fn configure(group: &mut BenchmarkGroup<'_, WallTime>, n: u32) {
         .throughput(Throughput::Elements(u64::from(n)));
 }
 
-/// Calls `visit` with the concrete sampler inside `any`. The match is
-/// exhaustive: a new kind is a compile error here until it gets a line.
+/// Something done with one concrete sampler type (generic code, no match).
 trait Visit {
     fn visit<S: Sampler2D>(&mut self, name: &str, sampler: &S);
 }
 
+/// Calls `visit` with the concrete sampler inside `any`. The match has one
+/// arm per kind and no wildcard, so a new kind does not compile until it
+/// gets its `concrete` groups here.
 fn visit_concrete(any: &AnySampler, v: &mut impl Visit) {
     let name = any.kind().name();
     match any {
