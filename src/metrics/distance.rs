@@ -317,7 +317,7 @@ fn closest_pair_squared(points: &[Vec2], torus: bool) -> f64 {
         if g == 1 {
             0
         } else if best.is_finite() {
-            ((libm::sqrt(best) / side * MARGIN).ceil() as isize).clamp(1, g)
+            (libm::ceil(libm::sqrt(best) / side * MARGIN) as isize).clamp(1, g)
         } else {
             g
         }

@@ -91,7 +91,7 @@ pub fn l2_star_discrepancy(points: &[Vec2]) -> Result<f64, Error> {
     }
     .sub(single.mul_f64(9.0 * nf))
     .add(pairs.mul_f64(18.0));
-    Ok((total.value() / (18.0 * nf * nf)).max(0.0).sqrt())
+    Ok(libm::sqrt((total.value() / (18.0 * nf * nf)).max(0.0)))
 }
 
 /// Centred L2 discrepancy (Hickernell 1998), with `u = x - 1/2`:
@@ -202,7 +202,7 @@ pub fn centered_l2_discrepancy(points: &[Vec2]) -> Result<f64, Error> {
     }
     .sub(single.mul_f64(288.0 * nf))
     .add(pairs.mul_f64(144.0));
-    Ok((total.value() / (144.0 * nf * nf)).max(0.0).sqrt())
+    Ok(libm::sqrt((total.value() / (144.0 * nf * nf)).max(0.0)))
 }
 
 /// `1 - v`, exactly (TwoSum).

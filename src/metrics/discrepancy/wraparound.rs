@@ -65,7 +65,7 @@ use crate::metrics::{coord, validate};
 /// ```
 pub fn wraparound_l2_discrepancy(points: &[Vec2]) -> Result<f64, Error> {
     validate(points)?;
-    Ok(wraparound_sweep(points).max(0.0).sqrt())
+    Ok(libm::sqrt(wraparound_sweep(points).max(0.0)))
 }
 
 /// `WD²` by the O(n log n) decomposition of [`wraparound_l2_discrepancy`].
@@ -368,7 +368,7 @@ pub fn wraparound_l2_discrepancy_quadratic(points: &[Vec2]) -> Result<f64, Error
     let total = Dd::ratio(17.0, 36.0)
         .mul_f64(nf)
         .add(off_diagonal.mul_f64(2.0));
-    Ok((total.value() / (nf * nf)).max(0.0).sqrt())
+    Ok(libm::sqrt((total.value() / (nf * nf)).max(0.0)))
 }
 
 /// `Σ_{j > i} (f(dx) f(dy) - 16/9)` with `f(d) = 3/2 - d (1 - d)`, each term
