@@ -34,11 +34,14 @@
 //! A renderer asks for samples by pixel, sample index and dimension pair
 //! (film position, lens, time, light, ...): that is [`PixelSampler`].
 //! [`Padded`] makes one of any [`Sampler2D`] (each pixel and dimension pair
-//! an independent pattern from [`pattern_seed`]), and [`ZSobol`] spreads
-//! the error across pixels as blue noise. [`PixelSampler::start`] makes a
-//! [`Domain`], the owned state of one pixel sample that hands out draws of
-//! one to four dimensions and keyed child domains ([`PixelSampler`] shows a
-//! path tracer's loop); [`PixelSamplerKind`] picks a sampler by name:
+//! an independent pattern from [`pattern_seed`]); [`ZSobol`] (at its
+//! power-of-two count) and [`BlueNoise`] (at every prefix, any count)
+//! spread the error across pixels as blue noise. [`PixelSampler::start`]
+//! makes a [`Domain`], the owned state of one pixel sample that hands out
+//! draws of one to four dimensions and keyed child domains
+//! ([`PixelSampler`] shows a path tracer's loop), and [`warp`] maps those
+//! draws onto disks, hemispheres, spheres, triangles and discrete choices;
+//! [`PixelSamplerKind`] picks a sampler by name:
 //!
 //! ```
 //! use wellspread::{Padded, PixelSampler, Sobol, ZSobol};
