@@ -350,13 +350,13 @@ fn primitives_are_pinned() {
     compare("primitives.txt", PRIMITIVES, &computed);
 }
 
-/// The pinned files are in sync with what the old tables held: a few values
-/// from outside the bless mechanism, transcribed from an independent Python
-/// model of `ZSobol` and from hand-checked primitives, so that blessing
-/// cannot silently rewrite history.
+/// A few values from outside the bless mechanism, so that blessing cannot
+/// silently rewrite them: two `ZSobol` samples from an independent Python
+/// transcription of the algorithm in its docs, and primitives checked by
+/// hand.
 #[test]
 fn independent_reference_values_hold() {
-    // hash_u32 is lowbias32's inverse-free form with hash_u32(0) = 0.
+    // lowbias32 is xorshifts and multiplies with no added constant: 0 -> 0.
     assert_eq!(hash_u32(0), 0);
     assert_eq!(u32_to_unit_f32(0x8000_0000), 0.5);
     assert_eq!(u32_to_unit_f32(u32::MAX).to_bits(), 0x3f7f_ffff);

@@ -170,27 +170,17 @@ pub fn fingerprint() -> u32 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::render::{SOBOL, TracerSampler};
-
-    fn bits(image: &Image) -> Vec<u32> {
-        image.pixels.iter().flatten().map(|v| v.to_bits()).collect()
-    }
+    use crate::render::{SOBOL, TracerSampler, one_and_two_threads, pixel_bits};
 
     #[test]
     fn cornell_frames_are_bit_identical_for_one_and_two_threads() {
-        let pool = |threads| {
-            rayon::ThreadPoolBuilder::new()
-                .num_threads(threads)
-                .build()
-                .unwrap()
-        };
-        let (one, two) = (pool(1), pool(2));
+        let (one, two) = one_and_two_threads();
         let (width, height) = (24, 20);
         for sampler in TracerSampler::all() {
             let frame = sampler.build(4, width, height, 3).unwrap();
             let draw = || render(width, height, 4, frame, sampler.film_lens());
             let (a, b) = (one.install(draw), two.install(draw));
-            assert_eq!(bits(&a), bits(&b), "{sampler}");
+            assert_eq!(pixel_bits(&a.pixels), pixel_bits(&b.pixels), "{sampler}");
         }
         let a = one.install(fingerprint);
         assert_eq!(a, two.install(fingerprint));

@@ -407,24 +407,33 @@ fn render_filtered<P: PixelSampler>(
     pixels
 }
 
+/// Rayon pools of one and two threads, for the tests that render a frame
+/// on each and compare the bits.
+#[cfg(test)]
+pub(crate) fn one_and_two_threads() -> (rayon::ThreadPool, rayon::ThreadPool) {
+    let pool = |threads| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+    };
+    (pool(1), pool(2))
+}
+
+/// Every channel of `pixels` as f32 bits, for bit-for-bit comparisons.
+#[cfg(test)]
+pub(crate) fn pixel_bits(pixels: &[Rgb]) -> Vec<u32> {
+    pixels.iter().flatten().map(|v| v.to_bits()).collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::scenes::SceneKind;
 
-    fn bits(image: &Image) -> Vec<u32> {
-        image.pixels.iter().flatten().map(|v| v.to_bits()).collect()
-    }
-
     #[test]
     fn images_are_bit_identical_for_one_and_two_threads() {
-        let pool = |threads| {
-            rayon::ThreadPoolBuilder::new()
-                .num_threads(threads)
-                .build()
-                .unwrap()
-        };
-        let (one, two) = (pool(1), pool(2));
+        let (one, two) = crate::render::one_and_two_threads();
         // 40 rows make three bands, so the wide filters' band seams are
         // exercised too.
         let (width, height) = (24, 40);
@@ -443,7 +452,11 @@ mod tests {
                     let sampler = kind.build(16, width, height, 7).unwrap();
                     let a = one.install(|| render(&scene, width, height, &sampler, 0, filter));
                     let b = two.install(|| render(&scene, width, height, &sampler, 0, filter));
-                    assert_eq!(bits(&a), bits(&b), "{scene_kind} {filter} {kind}");
+                    assert_eq!(
+                        pixel_bits(&a.pixels),
+                        pixel_bits(&b.pixels),
+                        "{scene_kind} {filter} {kind}"
+                    );
                 }
             }
         }

@@ -425,11 +425,7 @@ mod tests {
     use wellspread::{Padded, PixelSamplerKind, SamplerKind, Sobol};
 
     use super::*;
-    use crate::render::TracerSampler;
-
-    fn bits(image: &[Rgb]) -> Vec<u32> {
-        image.iter().flatten().map(|v| v.to_bits()).collect()
-    }
+    use crate::render::{TracerSampler, one_and_two_threads, pixel_bits};
 
     #[test]
     fn the_image_is_finite_non_negative_and_shows_the_light() {
@@ -512,13 +508,7 @@ mod tests {
 
     #[test]
     fn images_are_bit_identical_for_one_and_two_threads() {
-        let pool = |threads| {
-            rayon::ThreadPoolBuilder::new()
-                .num_threads(threads)
-                .build()
-                .unwrap()
-        };
-        let (one, two) = (pool(1), pool(2));
+        let (one, two) = one_and_two_threads();
         let (width, height) = (24, 20);
         for kind in [
             TracerSampler::Pixel(PixelSamplerKind::Padded(SamplerKind::Sobol)),
@@ -530,7 +520,7 @@ mod tests {
             let sampler = kind.build(16, width, height, 3).unwrap();
             let a = one.install(|| render_cornell(width, height, 16, &Pairs(&sampler)));
             let b = two.install(|| render_cornell(width, height, 16, &Pairs(&sampler)));
-            assert_eq!(bits(&a), bits(&b), "{kind}");
+            assert_eq!(pixel_bits(&a), pixel_bits(&b), "{kind}");
         }
     }
 
