@@ -53,10 +53,10 @@ use crate::{Error, SamplerKind};
 ///   hexagonal-packing distance, as
 ///   [`normalized_toroidal_min_distance`](crate::metrics::normalized_toroidal_min_distance))
 ///   is at least 0.6 with the jitter narrowed to a quarter of a fine cell.
-///   Of those it takes the first that does not line its points up with a
-///   diagonal: a lattice with short vectors near `(1, 1)` or `(1, -1)` puts
-///   whole rows of points on one side of an edge along `y = x` together, and
-///   the mirror images turn the anti-diagonal into the diagonal. The test is
+///   Of those it takes the first that passes a diagonal test: a lattice
+///   with short vectors near `(1, 1)` or `(1, -1)` puts whole rows of points
+///   on one side of an edge along `y = x` together, and the mirror images
+///   turn the anti-diagonal into the diagonal. The test is
 ///   exact counting: the mean squared error, in points, of the unjittered
 ///   set on the half-plane `y < x` (only the cells the diagonal crosses can
 ///   err; a point on the diagonal counts half, plus the variance of its
@@ -64,11 +64,14 @@ use crate::{Error, SamplerKind};
 ///   must be at most half that of independent uniform points in the same
 ///   cells. If no coupled lattice (`q` and `p` from the first four
 ///   multipliers; on coprime sides all of them give `q = p = 0`) passes, it
-///   takes the scored one with the least error; the uncoupled ones (`k = 0`
-///   on one side) come only when no coupled lattice keeps the bound. Then it widens the jitter (in sixteenths, up to the whole
-///   fine cell) as far as the bound allows. For every `n` from 16 to 4096
-///   but 24 the normalised bound is at least 0.6 (tested); measured minima
-///   and the integration errors are in `docs/quality.md`.
+///   takes the scored one with the least error (scores stop when their
+///   budget, see Cost, is spent); the uncoupled ones (`k = 0` on one side)
+///   come only when no coupled lattice keeps the bound. Then it widens the
+///   jitter (in sixteenths, up to the whole fine cell) as far as the bound
+///   allows. The test changes only which lattice is taken, so the bound and
+///   its proof are as above. For every `n` from 16 to 4096 but 24 the
+///   normalised bound is at least 0.6 (tested); measured minima and the
+///   integration errors are in `docs/quality.md`.
 /// - Where no lattice in that order reaches 0.6 at a quarter cell (some `n`
 ///   below 16, and n = 24), the constructor takes the largest bound with the
 ///   jitter at 1/16 of a fine cell, over every lattice for `n <= 256` (over
