@@ -114,12 +114,12 @@ fn all_metrics() -> Vec<Metric> {
         (
             "l2_star_discrepancy",
             |p| metrics::l2_star_discrepancy(p).is_ok(),
-            36.5,
+            17.5,
         ),
         (
             "centered_l2_discrepancy",
             |p| metrics::centered_l2_discrepancy(p).is_ok(),
-            28.0,
+            16.5,
         ),
         (
             "wraparound_l2_discrepancy",

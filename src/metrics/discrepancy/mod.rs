@@ -13,7 +13,7 @@ use alloc::vec::Vec;
 
 use glam::Vec2;
 
-use super::radix_sort;
+use super::{radix_sort, sort_keys_in_place};
 
 /// The keys `bits << 32 | index` of `points` sorted, that is, the indices in
 /// increasing order of one coordinate (`-0.0` as 0; ties in index order)
@@ -27,6 +27,19 @@ pub(super) fn sorted_keys(points: &[Vec2], coordinate: impl Fn(&Vec2) -> f32) ->
         .map(|(i, p)| (u64::from(coordinate(p).to_bits() & 0x7fff_ffff) << 32) | i as u64)
         .collect();
     radix_sort(&mut keys, |&k| k >> 32, 31);
+    keys
+}
+
+/// The keys of [`sorted_keys`] in the same order, sorted in place by
+/// [`sort_keys_in_place`] (no scratch copy, so 8 bytes a point at the peak
+/// instead of 16).
+pub(super) fn keys_in_place(points: &[Vec2], coordinate: impl Fn(&Vec2) -> f32) -> Vec<u64> {
+    let mut keys: Vec<u64> = points
+        .iter()
+        .enumerate()
+        .map(|(i, p)| (u64::from(coordinate(p).to_bits() & 0x7fff_ffff) << 32) | i as u64)
+        .collect();
+    sort_keys_in_place(&mut keys);
     keys
 }
 

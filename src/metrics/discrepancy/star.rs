@@ -5,7 +5,7 @@ use alloc::vec::Vec;
 
 use glam::Vec2;
 
-use super::{key_value, sorted_keys};
+use super::{key_value, keys_in_place, sorted_keys};
 use crate::Error;
 use crate::metrics::{coord, validate};
 
@@ -142,12 +142,7 @@ fn distinct_sorted(points: &[Vec2]) -> Vec<f32> {
 /// to a u64 (index `k` in the low half of word `k / 2` when `k` is even):
 /// 4 bytes a point, sorted in place from 8-byte keys.
 fn x_order(points: &[Vec2]) -> Vec<u64> {
-    let mut keys: Vec<u64> = points
-        .iter()
-        .enumerate()
-        .map(|(i, p)| (u64::from(p.x.to_bits() & 0x7fff_ffff) << 32) | i as u64)
-        .collect();
-    keys.sort_unstable();
+    let mut keys = keys_in_place(points, |p| p.x);
     // Word k / 2 is written only after key k / 2 (<= k) has been read.
     for k in 0..keys.len() {
         let index = keys[k] & 0xffff_ffff;
