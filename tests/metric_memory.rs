@@ -124,7 +124,7 @@ fn all_metrics() -> Vec<Metric> {
         (
             "wraparound_l2_discrepancy",
             |p| metrics::wraparound_l2_discrepancy(p).is_ok(),
-            52.5,
+            20.5,
         ),
         ("min_distance", |p| metrics::min_distance(p).is_ok(), 84.5),
         (

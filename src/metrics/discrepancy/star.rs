@@ -5,7 +5,7 @@ use alloc::vec::Vec;
 
 use glam::Vec2;
 
-use super::{key_value, keys_in_place, sorted_keys};
+use super::{key_value, keys_in_place, pack_low_halves, packed, sorted_keys};
 use crate::Error;
 use crate::metrics::{coord, validate};
 
@@ -79,7 +79,7 @@ pub fn star_discrepancy(points: &[Vec2]) -> Result<f64, Error> {
     let rank = |y: f32| ys.partition_point(|&b| b < y);
     // The point indices in increasing x, two to a u64.
     let order = x_order(points);
-    let point = |k: usize| points[(order[k / 2] >> (32 * (k % 2))) as u32 as usize];
+    let point = |k: usize| points[packed(&order, k) as usize];
     let m = ys.len();
 
     // Too few points (open boxes): for each top edge b_j in ys and 1, the line
@@ -139,23 +139,9 @@ fn distinct_sorted(points: &[Vec2]) -> Vec<f32> {
 }
 
 /// The indices of `points` in increasing x (ties in index order), packed two
-/// to a u64 (index `k` in the low half of word `k / 2` when `k` is even):
-/// 4 bytes a point, sorted in place from 8-byte keys.
+/// to a u64 ([`pack_low_halves`]), sorted in place.
 fn x_order(points: &[Vec2]) -> Vec<u64> {
-    let mut keys = keys_in_place(points, |p| p.x);
-    // Word k / 2 is written only after key k / 2 (<= k) has been read.
-    for k in 0..keys.len() {
-        let index = keys[k] & 0xffff_ffff;
-        let word = &mut keys[k / 2];
-        *word = if k % 2 == 0 {
-            index
-        } else {
-            *word | index << 32
-        };
-    }
-    keys.truncate(points.len().div_ceil(2));
-    keys.shrink_to_fit();
-    keys
+    pack_low_halves(keys_in_place(points, |p| p.x))
 }
 
 /// One node of the kinetic tree: the winning line of its subtree at the
@@ -525,9 +511,7 @@ mod tests {
                 .collect();
             let order = x_order(&points);
             assert_eq!(order.len(), n.div_ceil(2));
-            let got: Vec<usize> = (0..n)
-                .map(|k| (order[k / 2] >> (32 * (k % 2))) as u32 as usize)
-                .collect();
+            let got: Vec<usize> = (0..n).map(|k| packed(&order, k) as usize).collect();
             let mut want: Vec<usize> = (0..n).collect();
             want.sort_by(|&a, &b| points[a].x.total_cmp(&points[b].x).then(a.cmp(&b)));
             assert_eq!(got, want, "n = {n}");
