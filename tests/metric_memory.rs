@@ -4,7 +4,9 @@
 //!
 //! The `metrics` tool holds the points (8 bytes each) and runs the metrics
 //! one after another, so its peak is the points plus the largest single
-//! metric's peak; the bound below keeps that near 3x the point data.
+//! metric's peak; the bounds below keep that near 3x the point data (about
+//! 25 bytes a point) for spread-out sets. Allocation sizes are linear in n,
+//! so 2^18 points (set `METRIC_MEMORY_M` for another 2^m) stand for any size.
 
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -17,7 +19,8 @@ struct Counting;
 static LIVE: AtomicUsize = AtomicUsize::new(0);
 static PEAK: AtomicUsize = AtomicUsize::new(0);
 
-// SAFETY-free: this only forwards to `System` and counts bytes.
+// SAFETY: every method forwards to `System` with the caller's arguments,
+// so `System`'s guarantees carry over; the counters do not touch memory.
 unsafe impl GlobalAlloc for Counting {
     unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
         let p = unsafe { System.alloc(layout) };
@@ -101,45 +104,60 @@ fn point_sets(m: u32) -> Vec<(&'static str, Vec<Vec2>)> {
 }
 
 /// A metric, run for its side effect on the heap, and the most bytes per
-/// point it may allocate at its peak.
-type Metric = (&'static str, fn(&[Vec2]) -> bool, f64);
+/// point it may allocate at its peak on the spread-out sets (`sobol`,
+/// `grid24`) and on any set (`fine` included, whose cluster near the origin
+/// sends the distances to their sorted-cell grid).
+type Metric = (&'static str, fn(&[Vec2]) -> bool, [f64; 2]);
 
 fn all_metrics() -> Vec<Metric> {
     vec![
         (
             "star_discrepancy",
             |p| metrics::star_discrepancy(p).is_ok(),
-            16.5,
+            [16.5; 2],
         ),
         (
             "l2_star_discrepancy",
             |p| metrics::l2_star_discrepancy(p).is_ok(),
-            17.5,
+            [17.5; 2],
         ),
         (
             "centered_l2_discrepancy",
             |p| metrics::centered_l2_discrepancy(p).is_ok(),
-            16.5,
+            [16.5; 2],
         ),
+        // Off the 2^-32 grid, the double-double dominance sweep needs 4 more.
         (
             "wraparound_l2_discrepancy",
             |p| metrics::wraparound_l2_discrepancy(p).is_ok(),
-            20.5,
+            [16.5, 20.5],
         ),
-        ("min_distance", |p| metrics::min_distance(p).is_ok(), 84.5),
+        (
+            "min_distance",
+            |p| metrics::min_distance(p).is_ok(),
+            [16.5, 84.5],
+        ),
         (
             "toroidal_min_distance",
             |p| metrics::toroidal_min_distance(p).is_ok(),
-            120.5,
+            [16.5, 120.5],
         ),
         (
             "normalized_toroidal_min_distance",
             |p| metrics::normalized_toroidal_min_distance(p).is_ok(),
-            120.5,
+            [16.5, 120.5],
         ),
-        ("is_latin", |p| metrics::is_latin(p).is_ok(), 2.5),
-        ("is_net_base2", |p| metrics::is_net_base2(p).is_ok(), 20.5),
-        ("net_t_value", |p| metrics::net_t_value(p).is_ok(), 20.5),
+        ("is_latin", |p| metrics::is_latin(p).is_ok(), [2.5; 2]),
+        (
+            "is_net_base2",
+            |p| metrics::is_net_base2(p).is_ok(),
+            [12.5; 2],
+        ),
+        (
+            "net_t_value",
+            |p| metrics::net_t_value(p).is_ok(),
+            [12.5; 2],
+        ),
     ]
 }
 
@@ -152,16 +170,16 @@ fn every_metric_peaks_below_its_bytes_per_point() {
     let n = 1usize << m;
     let sets = point_sets(m);
     let mut over = Vec::new();
-    for (name, metric, bound) in all_metrics() {
-        let mut worst = 0.0f64;
+    for (name, metric, [spread, any]) in all_metrics() {
         for (set, points) in &sets {
             let per_point = peak_per_point(n, || assert!(metric(points), "{name} on {set}"));
-            println!("{name:34} {set:8} {per_point:6.2} B/pt");
-            worst = worst.max(per_point);
-        }
-        println!("{name:34} worst    {worst:6.2} B/pt (bound {bound})");
-        if worst > bound {
-            over.push(format!("{name}: {worst:.2} B/pt, bound {bound}"));
+            let bound = if *set == "fine" { any } else { spread };
+            println!("{name:34} {set:8} {per_point:6.2} B/pt (bound {bound})");
+            if per_point > bound {
+                over.push(format!(
+                    "{name} on {set}: {per_point:.2} B/pt, bound {bound}"
+                ));
+            }
         }
     }
     assert!(

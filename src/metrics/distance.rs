@@ -130,7 +130,8 @@ fn check(points: &[Vec2], metric: &'static str) -> Result<(), Error> {
 }
 
 /// Points bucketed into a `gx x gy` grid over a rectangle: `start[c]..start[c + 1]`
-/// indexes the points of cell `c = cy gx + cx` in `xs`, `ys`.
+/// indexes the points of cell `c = cy gx + cx` in `xs`, `ys` (f32, as the
+/// input: 8 bytes a point, read back exactly as f64).
 struct Grid {
     gx: usize,
     gy: usize,
@@ -138,8 +139,8 @@ struct Grid {
     side_x: f64,
     side_y: f64,
     start: Vec<u32>,
-    xs: Vec<f64>,
-    ys: Vec<f64>,
+    xs: Vec<f32>,
+    ys: Vec<f32>,
 }
 
 impl Grid {
@@ -194,8 +195,9 @@ impl Grid {
         let (mut xs, mut ys) = (vec![0.0; n], vec![0.0; n]);
         for (p, &c) in points.iter().zip(&cells) {
             let slot = &mut fill[c as usize];
-            xs[*slot as usize] = coord(p.x);
-            ys[*slot as usize] = coord(p.y);
+            // `+ 0.0` turns -0.0 into 0.0, as `coord` does.
+            xs[*slot as usize] = p.x + 0.0;
+            ys[*slot as usize] = p.y + 0.0;
             *slot += 1;
         }
         Some(Self {
@@ -207,6 +209,12 @@ impl Grid {
             xs,
             ys,
         })
+    }
+
+    /// Point `i` of the cell order.
+    #[inline(always)]
+    fn at(&self, i: usize) -> (f64, f64) {
+        (f64::from(self.xs[i]), f64::from(self.ys[i]))
     }
 
     fn cell(&self, c: usize) -> core::ops::Range<usize> {
@@ -228,6 +236,15 @@ impl Grid {
         let x = fold(x, self.gx, wrap[0])?;
         let y = fold(y, self.gy, wrap[1])?;
         Some((y * self.gx as isize + x) as usize)
+    }
+}
+
+impl Grid {
+    /// [`dist2`] between points `i` and `j` of the cell order.
+    #[inline(always)]
+    fn dist2(&self, i: usize, j: usize, wrap: [bool; 2]) -> f64 {
+        let ((ax, ay), (bx, by)) = (self.at(i), self.at(j));
+        dist2(ax, ay, bx, by, wrap)
     }
 }
 
@@ -280,7 +297,7 @@ fn closest_pair_squared(points: &[Vec2], torus: bool) -> f64 {
             let own = grid.cell(here);
             for i in own.clone() {
                 for j in i + 1..own.end {
-                    let d = dist2(grid.xs[i], grid.ys[i], grid.xs[j], grid.ys[j], wrap);
+                    let d = grid.dist2(i, j, wrap);
                     best = best.min(d);
                 }
                 if best == 0.0 {
@@ -296,7 +313,7 @@ fn closest_pair_squared(points: &[Vec2], torus: bool) -> f64 {
                 }
                 for i in own.clone() {
                     for j in grid.cell(other) {
-                        let d = dist2(grid.xs[i], grid.ys[i], grid.xs[j], grid.ys[j], wrap);
+                        let d = grid.dist2(i, j, wrap);
                         best = best.min(d);
                     }
                 }
@@ -346,7 +363,7 @@ fn closest_pair_squared(points: &[Vec2], torus: bool) -> f64 {
                     for i in own.clone() {
                         for j in grid.cell(other) {
                             if i != j {
-                                let d = dist2(grid.xs[i], grid.ys[i], grid.xs[j], grid.ys[j], wrap);
+                                let d = grid.dist2(i, j, wrap);
                                 best = best.min(d);
                             }
                         }
