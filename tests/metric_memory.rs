@@ -114,7 +114,7 @@ fn all_metrics() -> Vec<Metric> {
         (
             "star_discrepancy",
             |p| metrics::star_discrepancy(p).is_ok(),
-            [16.5; 2],
+            [18.5; 2],
         ),
         (
             "l2_star_discrepancy",

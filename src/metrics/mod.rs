@@ -2,19 +2,19 @@
 //! distances and stratification checks. They take `&[Vec2]` and know nothing
 //! about samplers.
 //!
-//! | metric | what it measures | time | memory |
+//! | metric | what it measures | time | memory (heap beyond the input, at the peak) |
 //! | --- | --- | --- | --- |
-//! | [`star_discrepancy`] | worst anchored box, exact | O(n log² n) amortised | O(n) |
-//! | [`l2_star_discrepancy`] | RMS of the local discrepancy (Warnock) | O(n log n) | O(n) |
-//! | [`centered_l2_discrepancy`] | Hickernell's centred L2 | O(n log n) | O(n) |
-//! | [`wraparound_l2_discrepancy`] | Hickernell's wrap-around L2 | O(n log n) | O(n) |
-//! | [`min_distance`] | closest pair | O(n) spread out, O(n log n) worst case | O(n) |
-//! | [`toroidal_min_distance`] | closest pair on the torus | O(n) spread out, O(n log n) worst case | O(n) |
-//! | [`normalized_toroidal_min_distance`] | the above over the hexagonal bound | as above | O(n) |
-//! | [`is_latin`] | one point per row and column of n x n | O(n) | O(n) |
+//! | [`star_discrepancy`] | worst anchored box, exact | O(n log² n) amortised | O(n): 16n bytes |
+//! | [`l2_star_discrepancy`] | RMS of the local discrepancy (Warnock) | O(n log n) | O(n): 17n bytes |
+//! | [`centered_l2_discrepancy`] | Hickernell's centred L2 | O(n log n) | O(n): 16n bytes |
+//! | [`wraparound_l2_discrepancy`] | Hickernell's wrap-around L2 | O(n log n) | O(n): 16n bytes (20n off the 2^-32 grid) |
+//! | [`min_distance`] | closest pair | O(n) spread out, O(n log n) worst case | O(n): 16n bytes spread out, about 84n clustered |
+//! | [`toroidal_min_distance`] | closest pair on the torus | O(n) spread out, O(n log n) worst case | O(n): 16n bytes spread out, about 120n clustered |
+//! | [`normalized_toroidal_min_distance`] | the above over the hexagonal bound | as above | as above |
+//! | [`is_latin`] | one point per row and column of n x n | O(n) | O(n): 2n bytes |
 //! | [`is_stratified`] | n / (columns rows) points per cell | O(n) | O(columns rows) |
-//! | [`is_net_base2`] | (0, m, 2)-net in base 2 | O(n log n) | O(n) |
-//! | [`net_t_value`] | smallest t of a (t, m, 2)-net in base 2 | O(n log n log log n) | O(n) |
+//! | [`is_net_base2`] | (0, m, 2)-net in base 2 | O(n log n) | O(n): 12n bytes |
+//! | [`net_t_value`] | smallest t of a (t, m, 2)-net in base 2 | O(n log n log log n) | O(n): 12n bytes |
 //! | [`radial_power_spectrum`] | periodogram averaged over rings of \|k\| | O(n K²) for K frequencies | O(min(K², 2^20)) |
 //!
 //! Every metric checks its input first and returns an [`Error`] naming the

@@ -25,7 +25,10 @@ use crate::metrics::{coord, validate};
 /// decreasing `1 - x` with a Fenwick tree over the ranks of `1 - y` (counts and
 /// sums) evaluates it in O(n log n) time and O(n) memory, the 2D case of
 /// Heinrich's 1996 algorithm; the orders come from radix sorts of the f32
-/// bits.
+/// bits (the second one in place). Memory peaks at about 17 bytes a point
+/// beyond the input: the x order as 8-byte keys holding each point's y rank,
+/// the y values by rank as f32, and a Fenwick tree that keeps counts and sums
+/// only for the nodes over 4 ranks or more.
 ///
 /// The three terms are of order 1 and cancel down to `T²`, which is near
 /// `4e-14` for the best sets of 2^24 points, so everything is in
@@ -108,7 +111,8 @@ pub fn l2_star_discrepancy(points: &[Vec2]) -> Result<f64, Error> {
 /// Each pair factor is `1 + min(|u_i|, |u_j|)` when both points lie on the same
 /// side of 1/2 and 1 otherwise, so the double sum splits into 1D sums over
 /// each half and 2D sums of `min · min` over each quadrant, each evaluated by
-/// a sorted sweep with a Fenwick tree: O(n log n) time, O(n) memory. As in
+/// a sorted sweep with a Fenwick tree: O(n log n) time, O(n) memory (about
+/// 16 bytes a point at the peak, as in [`l2_star_discrepancy`]). As in
 /// [`l2_star_discrepancy`], every value is a double-double (`|x - 1/2|` of an
 /// f32 is exact there) and the cancelling combination
 /// `144 n² CD² = 25 n² - 288 n Σ_i (..) + 144 Σ Σ (..)` is formed before the
