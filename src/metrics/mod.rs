@@ -2,19 +2,19 @@
 //! distances and stratification checks. They take `&[Vec2]` and know nothing
 //! about samplers.
 //!
-//! | metric | what it measures | time | memory |
+//! | metric | what it measures | time | memory (heap beyond the input, at the peak) |
 //! | --- | --- | --- | --- |
-//! | [`star_discrepancy`] | worst anchored box, exact | O(n log² n) amortised | O(n) |
-//! | [`l2_star_discrepancy`] | RMS of the local discrepancy (Warnock) | O(n log n) | O(n) |
-//! | [`centered_l2_discrepancy`] | Hickernell's centred L2 | O(n log n) | O(n) |
-//! | [`wraparound_l2_discrepancy`] | Hickernell's wrap-around L2 | O(n log n) | O(n) |
-//! | [`min_distance`] | closest pair | O(n) spread out, O(n log n) worst case | O(n) |
-//! | [`toroidal_min_distance`] | closest pair on the torus | O(n) spread out, O(n log n) worst case | O(n) |
-//! | [`normalized_toroidal_min_distance`] | the above over the hexagonal bound | as above | O(n) |
-//! | [`is_latin`] | one point per row and column of n x n | O(n) | O(n) |
+//! | [`star_discrepancy`] | worst anchored box, exact | O(n log² n) amortised | O(n): 16n bytes |
+//! | [`l2_star_discrepancy`] | RMS of the local discrepancy (Warnock) | O(n log n) | O(n): 17n bytes |
+//! | [`centered_l2_discrepancy`] | Hickernell's centred L2 | O(n log n) | O(n): 16n bytes |
+//! | [`wraparound_l2_discrepancy`] | Hickernell's wrap-around L2 | O(n log n) | O(n): 16n bytes (20n off the 2^-32 grid) |
+//! | [`min_distance`] | closest pair | O(n) spread out, O(n log n) worst case | O(n): 16n bytes spread out, about 84n clustered |
+//! | [`toroidal_min_distance`] | closest pair on the torus | O(n) spread out, O(n log n) worst case | O(n): 16n bytes spread out, about 120n clustered |
+//! | [`normalized_toroidal_min_distance`] | the above over the hexagonal bound | as above | as above |
+//! | [`is_latin`] | one point per row and column of n x n | O(n) | O(n): 2n bytes |
 //! | [`is_stratified`] | n / (columns rows) points per cell | O(n) | O(columns rows) |
-//! | [`is_net_base2`] | (0, m, 2)-net in base 2 | O(n log n) | O(n) |
-//! | [`net_t_value`] | smallest t of a (t, m, 2)-net in base 2 | O(n log n log log n) | O(n) |
+//! | [`is_net_base2`] | (0, m, 2)-net in base 2 | O(n log n) | O(n): 12n bytes |
+//! | [`net_t_value`] | smallest t of a (t, m, 2)-net in base 2 | O(n log n log log n) | O(n): 12n bytes |
 //! | [`radial_power_spectrum`] | periodogram averaged over rings of \|k\| | O(n K²) for K frequencies | O(min(K², 2^20)) |
 //!
 //! Every metric checks its input first and returns an [`Error`] naming the
@@ -88,6 +88,63 @@ pub(crate) fn validate(points: &[Vec2]) -> Result<(), Error> {
 #[inline]
 pub(crate) fn coord(v: f32) -> f64 {
     f64::from(v) + 0.0
+}
+
+/// Sorts keys `coordinate bits << 32 | index` (coordinate bits below 2^31)
+/// in place by their whole value, with no scratch copy: an MSD radix sort
+/// (the American flag sort of McIlroy, Bostic & McIlroy 1993, "Engineering
+/// radix sort") on the coordinate bits in digits of 8, 8, 8 and 7 bits, and a
+/// comparison sort for buckets of at most 32 keys and for each run of equal
+/// coordinates. O(n) passes for spread-out values, O(n log n) at worst.
+pub(crate) fn sort_keys_in_place(keys: &mut [u64]) {
+    sort_digits(keys, 0);
+}
+
+/// [`sort_keys_in_place`] from the digit at `level` on (0 the most significant).
+fn sort_digits(keys: &mut [u64], level: usize) {
+    // The lowest bit of each digit; digit 3 also reads bit 39, which the
+    // keys of one bucket share.
+    const LOW: [u32; 4] = [55, 47, 39, 32];
+    if keys.len() <= 32 || level == LOW.len() {
+        keys.sort_unstable();
+        return;
+    }
+    let low = LOW[level];
+    let digit = |k: u64| ((k >> low) & 0xff) as usize;
+    let mut count = [0usize; 256];
+    for &k in keys.iter() {
+        count[digit(k)] += 1;
+    }
+    if count.contains(&keys.len()) {
+        sort_digits(keys, level + 1);
+        return;
+    }
+    let (mut head, mut end) = ([0usize; 256], [0usize; 256]);
+    let mut total = 0;
+    for d in 0..256 {
+        head[d] = total;
+        total += count[d];
+        end[d] = total;
+    }
+    // Each key moves once, along cycles, to the next free slot of its digit.
+    for d in 0..256 {
+        while head[d] < end[d] {
+            let mut key = keys[head[d]];
+            let mut to = digit(key);
+            while to != d {
+                core::mem::swap(&mut key, &mut keys[head[to]]);
+                head[to] += 1;
+                to = digit(key);
+            }
+            keys[head[d]] = key;
+            head[d] += 1;
+        }
+    }
+    let mut start = 0;
+    for &c in &count {
+        sort_digits(&mut keys[start..start + c], level + 1);
+        start += c;
+    }
 }
 
 /// Stable LSD radix sort of `items` by the low `bits` bits of `key`, in

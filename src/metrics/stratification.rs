@@ -129,7 +129,7 @@ pub fn is_stratified(points: &[Vec2], columns: u32, rows: u32) -> Result<bool, E
 /// area `1/n`, for all `m + 1` shapes `k = 0..=m`, holds exactly one point.
 ///
 /// O(n log n) time (one pass per shape over exact integer cell indices), O(n)
-/// memory. f32 values just below 1 are `2^-24` apart, so no f32 set of more
+/// memory (12 bytes a point: the cells as two u32 and a u32 stamp). f32 values just below 1 are `2^-24` apart, so no f32 set of more
 /// than 2^24 points is a net (its narrowest columns near 1 are empty).
 ///
 /// # Errors
@@ -150,21 +150,29 @@ pub fn is_stratified(points: &[Vec2], columns: u32, rows: u32) -> Result<bool, E
 /// # Ok::<(), wellspread::Error>(())
 /// ```
 pub fn is_net_base2(points: &[Vec2]) -> Result<bool, Error> {
-    let (m, cells) = net_cells(points)?;
-    let n = cells.len();
+    let m = net_order(points)?;
+    let n = points.len();
+    Ok(match packed_cells(points, m) {
+        Some(cells) => is_net_of(n, m, || unpacked(&cells)),
+        None => is_net_of(n, m, || computed_cells(points, m)),
+    })
+}
+
+/// [`is_net_base2`] of the `n` points of `cells` (see [`packed_cells`]).
+fn is_net_of<I: Iterator<Item = (u64, u64)>>(n: usize, m: u32, cells: impl Fn() -> I) -> bool {
     let mut stamp = vec![u32::MAX; n];
     for k in 0..=m {
         let (drop_x, drop_y) = (m - k, k);
-        for &(x, y) in &cells {
+        for (x, y) in cells() {
             // Top k bits of x, then top m - k bits of y: an index below 2^m.
             let id = (((x >> drop_x) << (m - k)) | (y >> drop_y)) as usize;
             if stamp[id] == k {
-                return Ok(false);
+                return false;
             }
             stamp[id] = k;
         }
     }
-    Ok(true)
+    true
 }
 
 /// The t-value of a base-2 net: the smallest `t` for which the set of
@@ -187,7 +195,8 @@ pub fn is_net_base2(points: &[Vec2]) -> Result<bool, Error> {
 /// each; a check of one `t` visits at most its `m - t + 1` shapes (a failing
 /// one usually stops early), and a galloping then binary search over `t`
 /// checks O(log m) values, starting with `t = 0`, so a (0, m, 2)-net costs
-/// one check: O(n m log m) time in all, O(n) memory. Cells are exact (see
+/// one check: O(n m log m) time in all, O(n) memory (12 bytes a point, as
+/// for [`is_net_base2`]). Cells are exact (see
 /// the module docs).
 ///
 /// # Limits
@@ -224,21 +233,30 @@ pub fn is_net_base2(points: &[Vec2]) -> Result<bool, Error> {
 /// Niederreiter 1992, "Random Number Generation and Quasi-Monte Carlo
 /// Methods", SIAM, chapter 4 ((t, m, s)-nets).
 pub fn net_t_value(points: &[Vec2]) -> Result<u32, Error> {
-    let (m, cells) = net_cells(points)?;
-    let n = cells.len();
+    let m = net_order(points)?;
+    let n = points.len();
+    Ok(match packed_cells(points, m) {
+        Some(cells) => net_t_value_of(n, || unpacked(&cells), m),
+        None => net_t_value_of(n, || computed_cells(points, m), m),
+    })
+}
+
+/// [`net_t_value`] of the `n` points of `cells` (see [`with_cells`]).
+fn net_t_value_of<I: Iterator<Item = (u64, u64)>>(n: usize, cells: impl Fn() -> I, m: u32) -> u32 {
     let mut counts = vec![0u32; n];
+    let is_net_with_t = |t: u32, counts: &mut [u32]| is_net_with_t(&cells, m, t, counts);
     // Galloping search from t = 0 (the answer for good sets, which then costs
     // one check), then a binary search. A failing check usually stops early.
     // Invariant: the set is a (hi, m, 2)-net and not a (lo - 1, m, 2)-net.
     let (mut lo, mut hi) = (0, m);
     let mut step = 1;
     while lo < hi {
-        if is_net_with_t(&cells, m, lo, &mut counts) {
+        if is_net_with_t(lo, &mut counts) {
             hi = lo;
             break;
         }
         let next = (lo + step).min(hi);
-        if is_net_with_t(&cells, m, next, &mut counts) {
+        if is_net_with_t(next, &mut counts) {
             (lo, hi) = (lo + 1, next);
             break;
         }
@@ -247,27 +265,32 @@ pub fn net_t_value(points: &[Vec2]) -> Result<u32, Error> {
     }
     while lo < hi {
         let t = lo + (hi - lo) / 2;
-        if is_net_with_t(&cells, m, t, &mut counts) {
+        if is_net_with_t(t, &mut counts) {
             hi = t;
         } else {
             lo = t + 1;
         }
     }
-    Ok(lo)
+    lo
 }
 
 /// Whether the points, given as m-bit cell indices, form a (t, m, 2)-net:
 /// for every shape `a + b = m - t`, no elementary interval holds more than
 /// `2^t` points (with `2^m` points in `2^(m-t)` intervals, then all hold
 /// exactly `2^t`).
-fn is_net_with_t(cells: &[(u64, u64)], m: u32, t: u32, counts: &mut [u32]) -> bool {
+fn is_net_with_t<I: Iterator<Item = (u64, u64)>>(
+    cells: &impl Fn() -> I,
+    m: u32,
+    t: u32,
+    counts: &mut [u32],
+) -> bool {
     let d = m - t;
     let cap = 1u32 << t;
     for a in 0..=d {
         let b = d - a;
         let counts = &mut counts[..1 << d];
         counts.fill(0);
-        for &(x, y) in cells {
+        for (x, y) in cells() {
             let id = (((x >> (m - a)) << b) | (y >> (m - b))) as usize;
             counts[id] += 1;
             if counts[id] > cap {
@@ -278,20 +301,42 @@ fn is_net_with_t(cells: &[(u64, u64)], m: u32, t: u32, counts: &mut [u32]) -> bo
     true
 }
 
-/// What the base-2 net checks share: `m` for `n = 2^m` points, and each
-/// point's fine cell `(column, row)` on the `n x n` grid, in fixed point, so
-/// that the cell in a `2^k`-wide column is the top `k` of its `m` bits.
-fn net_cells(points: &[Vec2]) -> Result<(u32, Vec<(u64, u64)>), Error> {
+/// `m` for `n = 2^m` points, after checking them.
+fn net_order(points: &[Vec2]) -> Result<u32, Error> {
     validate(points)?;
     let n = points.len();
     if !n.is_power_of_two() {
         return Err(Error::NotPowerOfTwo { n });
     }
-    let cells = points
+    Ok(n.trailing_zeros())
+}
+
+/// Each point's fine cell `(column, row)` on the `n x n` grid, `n = 2^m`,
+/// in fixed point, so that the cell in a `2^k`-wide column is the top `k`
+/// of its `m` bits: kept as two u32 (8 bytes a point) while `m <= 32`
+/// (cells below `2^32`); `None` beyond, where [`computed_cells`] recomputes
+/// them at each pass.
+fn packed_cells(points: &[Vec2], m: u32) -> Option<Vec<(u32, u32)>> {
+    let n = 1u64 << m;
+    (m <= 32).then(|| {
+        points
+            .iter()
+            .map(|p| (cell_of(p.x, n) as u32, cell_of(p.y, n) as u32))
+            .collect()
+    })
+}
+
+/// The cells of [`packed_cells`], widened.
+fn unpacked(cells: &[(u32, u32)]) -> impl Iterator<Item = (u64, u64)> + '_ {
+    cells.iter().map(|&(x, y)| (u64::from(x), u64::from(y)))
+}
+
+/// The cells of [`packed_cells`], computed from the points.
+fn computed_cells(points: &[Vec2], m: u32) -> impl Iterator<Item = (u64, u64)> + '_ {
+    let n = 1u64 << m;
+    points
         .iter()
-        .map(|p| (cell_of(p.x, n as u64), cell_of(p.y, n as u64)))
-        .collect();
-    Ok((n.trailing_zeros(), cells))
+        .map(move |p| (cell_of(p.x, n), cell_of(p.y, n)))
 }
 
 #[cfg(test)]

@@ -2,11 +2,10 @@
 //! with a Fenwick tree, in double-double arithmetic.
 
 use alloc::vec;
-use alloc::vec::Vec;
 
 use glam::Vec2;
 
-use super::{key_value, sorted_keys};
+use super::{key_value, keys_in_place, sorted_keys};
 use crate::Error;
 use crate::metrics::double_double::{Dd, two_sum};
 use crate::metrics::{coord, validate};
@@ -26,7 +25,10 @@ use crate::metrics::{coord, validate};
 /// decreasing `1 - x` with a Fenwick tree over the ranks of `1 - y` (counts and
 /// sums) evaluates it in O(n log n) time and O(n) memory, the 2D case of
 /// Heinrich's 1996 algorithm; the orders come from radix sorts of the f32
-/// bits.
+/// bits (the second one in place). Memory peaks at about 17 bytes a point
+/// beyond the input: the x order as 8-byte keys holding each point's y rank,
+/// the y values by rank as f32, and a Fenwick tree that keeps counts and sums
+/// only for the nodes over 4 ranks or more.
 ///
 /// The three terms are of order 1 and cancel down to `T²`, which is near
 /// `4e-14` for the best sets of 2^24 points, so everything is in
@@ -64,25 +66,27 @@ pub fn l2_star_discrepancy(points: &[Vec2]) -> Result<f64, Error> {
         // x² of an f32 is exact in f64.
         single = single.add(one_minus(x * x).mul(one_minus(y * y)));
     }
-    // The rank of 1 - y counts down from the top of the increasing y order;
-    // increasing x is decreasing 1 - x.
+    // The rank of 1 - y counts down from the top of the increasing y order,
+    // so the y of rank r is the (n - 1 - r)-th smallest; increasing x is
+    // decreasing 1 - x.
+    let keys_y = sorted_keys(points, |p| p.y);
     let mut rank = vec![0u32; n];
-    for (k, &key) in sorted_keys(points, |p| p.y).iter().enumerate() {
-        rank[key as u32 as usize] = (n - 1 - k) as u32;
+    let mut q_by_rank = vec![0.0f32; n];
+    for (k, &key) in keys_y.iter().enumerate() {
+        let r = n - 1 - k;
+        rank[key as u32 as usize] = r as u32;
+        q_by_rank[r] = key_value(key);
     }
-    let sweep: Vec<Entry> = sorted_keys(points, |p| p.x)
-        .iter()
-        .map(|&key| {
-            let i = key as u32 as usize;
-            Entry {
-                p: key_value(key),
-                q: points[i].y,
-                rank: rank[i],
-            }
-        })
-        .collect();
+    drop(keys_y);
+    // The x order as `x bits << 32 | rank of y`, sorted in place (ties in
+    // index order, as the y ranks are).
+    let mut sweep = keys_in_place(points, |p| p.x);
+    for key in &mut sweep {
+        *key = (*key & !0xffff_ffff) | u64::from(rank[*key as u32 as usize]);
+    }
     drop(rank);
-    let pairs = sum_min_min(&sweep, |v| one_minus(coord(v)));
+    let entries = sweep.iter().map(|&key| (key_value(key), key as u32));
+    let pairs = sum_min_min(entries, &q_by_rank, |v| one_minus(coord(v)));
     // 18 n² T² = 2 n² - 9 n Σ (1 - x²)(1 - y²) + 18 Σ Σ min min; 2 n² and
     // 9 n are exact in f64 for n below 2^26.
     let total = Dd {
@@ -107,7 +111,8 @@ pub fn l2_star_discrepancy(points: &[Vec2]) -> Result<f64, Error> {
 /// Each pair factor is `1 + min(|u_i|, |u_j|)` when both points lie on the same
 /// side of 1/2 and 1 otherwise, so the double sum splits into 1D sums over
 /// each half and 2D sums of `min · min` over each quadrant, each evaluated by
-/// a sorted sweep with a Fenwick tree: O(n log n) time, O(n) memory. As in
+/// a sorted sweep with a Fenwick tree: O(n log n) time, O(n) memory (about
+/// 16 bytes a point at the peak, as in [`l2_star_discrepancy`]). As in
 /// [`l2_star_discrepancy`], every value is a double-double (`|x - 1/2|` of an
 /// f32 is exact there) and the cancelling combination
 /// `144 n² CD² = 25 n² - 288 n Σ_i (..) + 144 Σ Σ (..)` is formed before the
@@ -143,57 +148,80 @@ pub fn centered_l2_discrepancy(points: &[Vec2]) -> Result<f64, Error> {
         single = single.add(gx.add(gy).add(gx.mul(gy)));
     }
     let upper = |v: f32| v >= 0.5;
-    let keys_x = sorted_keys(points, |p| p.x);
-    let keys_y = sorted_keys(points, |p| p.y);
     // |u| decreases along the increasing order below 1/2 and along the
-    // decreasing order above it.
-    let mut pairs = Dd::ZERO;
-    for keys in [&keys_x, &keys_y] {
+    // decreasing order above it: the 1D sums over each half.
+    let sums_1d = |keys: &[u64]| {
         let values = || keys.iter().map(|&k| key_value(k));
         let lower = values().filter(|&v| !upper(v));
         let higher = values().rev().filter(|&v| upper(v));
-        pairs = pairs.add(sum_min_1d(lower.map(distance_to_half)));
-        pairs = pairs.add(sum_min_1d(higher.map(distance_to_half)));
-    }
+        (
+            sum_min_1d(lower.map(distance_to_half)),
+            sum_min_1d(higher.map(distance_to_half)),
+        )
+    };
     // Per quadrant (x side, y side): its points in decreasing |u_x|, each
-    // with the rank of its |u_y| among them.
+    // with the rank of its |u_y| among them. Quadrant q owns the slots
+    // `start[q]..start[q] + size[q]`, a slot being a rank plus the start.
     let quadrant = |p: Vec2| 2 * usize::from(upper(p.x)) + usize::from(upper(p.y));
-    let mut sizes = [0u32; 4];
+    let mut sizes = [0usize; 4];
     for p in points {
         sizes[quadrant(*p)] += 1;
     }
-    let mut rank = vec![0u32; n];
-    let mut seen = [0u32; 4];
+    let starts = [0, sizes[0], sizes[0] + sizes[1], n - sizes[3]];
+    let keys_y = sorted_keys(points, |p| p.y);
+    let y_1d = sums_1d(&keys_y);
+    // Per point its slot, and per slot its y.
+    let mut slot = vec![0u32; n];
+    let mut q_by_slot = vec![0.0f32; n];
+    let mut seen = [0usize; 4];
     for &key in &keys_y {
         let i = key as u32 as usize;
         let q = quadrant(points[i]);
-        rank[i] = if upper(key_value(key)) {
+        let rank = if upper(key_value(key)) {
             seen[q]
         } else {
             sizes[q] - 1 - seen[q]
         };
+        slot[i] = (starts[q] + rank) as u32;
+        q_by_slot[starts[q] + rank] = key_value(key);
         seen[q] += 1;
     }
     drop(keys_y);
-    let mut sweeps: [Vec<Entry>; 4] = Default::default();
-    for (sweep, &size) in sweeps.iter_mut().zip(&sizes) {
-        sweep.reserve_exact(size as usize);
+    // The x order as `x bits << 32 | slot`; the x side and the slot give
+    // the quadrant back.
+    let mut sweep = keys_in_place(points, |p| p.x);
+    let x_1d = sums_1d(&sweep);
+    for key in &mut sweep {
+        *key = (*key & !0xffff_ffff) | u64::from(slot[*key as u32 as usize]);
     }
-    for &key in &keys_x {
-        let i = key as u32 as usize;
-        let p = points[i];
-        sweeps[quadrant(p)].push(Entry {
-            p: p.x,
-            q: p.y,
-            rank: rank[i],
-        });
+    drop(slot);
+    let mut pairs = Dd::ZERO;
+    for s in [x_1d.0, x_1d.1, y_1d.0, y_1d.1] {
+        pairs = pairs.add(s);
     }
-    drop((keys_x, rank));
-    for (q, sweep) in sweeps.iter_mut().enumerate() {
-        if q >= 2 {
-            sweep.reverse();
-        }
-        pairs = pairs.add(sum_min_min(sweep, distance_to_half));
+    let quadrant_of = |key: u64| {
+        let x_side = 2 * usize::from(upper(key_value(key)));
+        x_side + usize::from(key as u32 as usize >= starts[x_side + 1])
+    };
+    for (q, &size) in sizes.iter().enumerate() {
+        let q_by_rank = &q_by_slot[starts[q]..][..size];
+        let entries = |key: &u64| {
+            (quadrant_of(*key) == q).then(|| (key_value(*key), *key as u32 - starts[q] as u32))
+        };
+        let sum = if q >= 2 {
+            sum_min_min(
+                sweep.iter().rev().filter_map(entries),
+                q_by_rank,
+                distance_to_half,
+            )
+        } else {
+            sum_min_min(
+                sweep.iter().filter_map(entries),
+                q_by_rank,
+                distance_to_half,
+            )
+        };
+        pairs = pairs.add(sum);
     }
     // 144 n² CD² = 25 n² - 288 n Σ (..) + 144 Σ Σ (..).
     let total = Dd {
@@ -231,55 +259,90 @@ fn sum_min_1d(decreasing: impl Iterator<Item = Dd>) -> Dd {
     s
 }
 
-/// One point of a [`sum_min_min`] sweep: its two coordinates and the rank
-/// of its `q` value.
-#[derive(Clone, Copy, Debug)]
-struct Entry {
-    p: f32,
-    q: f32,
-    rank: u32,
-}
-
-/// One Fenwick node: how many points and the sum of their `q` values.
-#[derive(Clone, Copy, Debug, Default)]
-struct Node {
-    count: u32,
-    sum: Dd,
+/// `Dd::ZERO.add(v)` for a `v` with `hi + lo` rounding to `hi` (a TwoSum
+/// result, as every value of [`sum_min_min`] is): `v` with a `-0.0` low part
+/// made `+0.0`, without the additions.
+#[inline]
+fn first_sum(v: Dd) -> Dd {
+    let sum = Dd {
+        hi: v.hi,
+        lo: v.lo + 0.0,
+    };
+    debug_assert_eq!(
+        (sum.hi.to_bits(), sum.lo.to_bits()),
+        (Dd::ZERO.add(v).hi.to_bits(), Dd::ZERO.add(v).lo.to_bits())
+    );
+    sum
 }
 
 /// `Σ_i Σ_j min(p_i, p_j) min(q_i, q_j)` over all ordered pairs of the
-/// points of `sweep` (the diagonal included), with `p = value(entry.p)` and
-/// `q = value(entry.q)`, in O(n log n).
+/// points of `sweep` (the diagonal included), in O(n log n), given each point
+/// as `(p, r)` with `p = value(p)`, `q = value(q_by_rank[r])`.
 ///
-/// `sweep` lists the points in non-increasing `p`, and each one's `rank` is
-/// its position in non-decreasing `q` (a permutation of `0..sweep.len()`).
+/// `sweep` lists the points in non-increasing `p`, and each one's `r` is its
+/// position in non-decreasing `q` (a permutation of `0..q_by_rank.len()`).
 /// Every earlier point of the sweep has the larger `p`; a Fenwick tree over
 /// the ranks of `q` returns how many earlier points have a larger `q` (each
 /// contributes `q_i`) and the sum of the smaller ones. Ties count the same
 /// either way.
-fn sum_min_min(sweep: &[Entry], value: impl Fn(f32) -> Dd) -> Dd {
-    let len = sweep.len();
-    let mut tree = vec![Node::default(); len + 1];
+///
+/// Memory is about 5.1 bytes a rank: the Fenwick counts and sums are kept
+/// only for the nodes that cover 4 ranks or more (a quarter of them). A node
+/// over 1 or 2 ranks is recomputed from a bit set of the inserted ranks and
+/// `q_by_rank`, which gives the same double-double as summing in the sweep's
+/// order (a sum of at most two values does not depend on their order).
+fn sum_min_min(
+    sweep: impl Iterator<Item = (f32, u32)>,
+    q_by_rank: &[f32],
+    value: impl Fn(f32) -> Dd,
+) -> Dd {
+    let len = q_by_rank.len();
+    let mut inserted = vec![0u64; len.div_ceil(64)];
+    // Node k = 4 j of the tree over ranks (the ranks k - lowbit(k)..k) is
+    // node j of a tree over groups of 4 ranks: its count and its sum.
+    let mut counts = vec![0u32; len / 4 + 1];
+    let mut sums = vec![Dd::ZERO; len / 4 + 1];
+    let is_in = |inserted: &[u64], r: usize| inserted[r / 64] >> (r % 64) & 1 != 0;
     let (mut off, mut diagonal) = (Dd::ZERO, Dd::ZERO);
-    for (seen, e) in sweep.iter().enumerate() {
-        let (pi, qi) = (value(e.p), value(e.q));
-        let r = e.rank as usize;
+    for (seen, (p, r)) in sweep.enumerate() {
+        let (pi, qi) = (value(p), value(q_by_rank[r as usize]));
+        let r = r as usize;
+        // The nodes over 1 or 2 ranks come first on the path (the spans grow).
         let (mut below, mut below_sum) = (0u32, Dd::ZERO);
         let mut k = r;
-        while k > 0 {
-            below += tree[k].count;
-            below_sum = below_sum.add(tree[k].sum);
+        while !k.is_multiple_of(4) {
+            let span = k & k.wrapping_neg();
+            let mut node: Option<Dd> = None;
+            for (rank, &q) in (k - span..k).zip(&q_by_rank[k - span..k]) {
+                if is_in(&inserted, rank) {
+                    let v = value(q);
+                    node = Some(node.map_or_else(|| first_sum(v), |s| s.add(v)));
+                    below += 1;
+                }
+            }
+            below_sum = below_sum.add(node.unwrap_or(Dd::ZERO));
             k &= k - 1;
+        }
+        let mut j = k / 4;
+        while j > 0 {
+            below += counts[j];
+            below_sum = below_sum.add(sums[j]);
+            j &= j - 1;
         }
         let above = seen as u32 - below;
         let inner = qi.mul_f64(f64::from(above)).add(below_sum);
         off = off.add(inner.mul(pi));
         diagonal = diagonal.add(pi.mul(qi));
+        inserted[r / 64] |= 1 << (r % 64);
         let mut k = r + 1;
-        while k <= len {
-            tree[k].count += 1;
-            tree[k].sum = tree[k].sum.add(qi);
+        while !k.is_multiple_of(4) {
             k += k & k.wrapping_neg();
+        }
+        let mut j = k / 4;
+        while j < sums.len() {
+            counts[j] += 1;
+            sums[j] = sums[j].add(qi);
+            j += j & j.wrapping_neg();
         }
     }
     off.mul_f64(2.0).add(diagonal)
@@ -288,6 +351,7 @@ fn sum_min_min(sweep: &[Entry], value: impl Fn(f32) -> Dd) -> Dd {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use alloc::vec::Vec;
 
     fn brute_min_min(p: &[f64], q: &[f64]) -> f64 {
         let mut s = 0.0;
@@ -319,16 +383,16 @@ mod tests {
             for (r, &i) in by_q.iter().enumerate() {
                 rank[i] = r as u32;
             }
-            let sweep: Vec<Entry> = order
-                .iter()
-                .map(|&i| Entry {
-                    p: p[i],
-                    q: q[i],
-                    rank: rank[i],
-                })
-                .collect();
+            let mut q_by_rank = [0.0f32; 6];
+            for i in 0..6 {
+                q_by_rank[rank[i] as usize] = q[i];
+            }
+            let sweep = order.iter().map(|&i| (p[i], rank[i]));
             // Dyadic values: both sums are exact.
-            assert_eq!(sum_min_min(&sweep, dd).value(), brute_min_min(&p64, &q64));
+            assert_eq!(
+                sum_min_min(sweep, &q_by_rank, dd).value(),
+                brute_min_min(&p64, &q64)
+            );
             let decreasing = order.iter().map(|&i| dd(p[i]));
             assert_eq!(
                 sum_min_1d(decreasing).value(),

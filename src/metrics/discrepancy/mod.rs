@@ -13,7 +13,7 @@ use alloc::vec::Vec;
 
 use glam::Vec2;
 
-use super::radix_sort;
+use super::{radix_sort, sort_keys_in_place};
 
 /// The keys `bits << 32 | index` of `points` sorted, that is, the indices in
 /// increasing order of one coordinate (`-0.0` as 0; ties in index order)
@@ -28,6 +28,53 @@ pub(super) fn sorted_keys(points: &[Vec2], coordinate: impl Fn(&Vec2) -> f32) ->
         .collect();
     radix_sort(&mut keys, |&k| k >> 32, 31);
     keys
+}
+
+/// The keys of [`sorted_keys`] in the same order, sorted in place by
+/// [`sort_keys_in_place`] (no scratch copy, so 8 bytes a point at the peak
+/// instead of 16).
+pub(super) fn keys_in_place(points: &[Vec2], coordinate: impl Fn(&Vec2) -> f32) -> Vec<u64> {
+    let mut keys: Vec<u64> = points
+        .iter()
+        .enumerate()
+        .map(|(i, p)| (u64::from(coordinate(p).to_bits() & 0x7fff_ffff) << 32) | i as u64)
+        .collect();
+    sort_keys_in_place(&mut keys);
+    keys
+}
+
+/// The low halves of `keys` (the point indices of [`sorted_keys`] keys),
+/// packed in place two to a u64, index `k` in the low half of word `k / 2`
+/// when `k` is even: 4 bytes a point. [`packed`] reads them.
+pub(super) fn pack_low_halves(mut keys: Vec<u64>) -> Vec<u64> {
+    let n = keys.len();
+    // Word k / 2 is written only after key k / 2 (<= k) has been read.
+    for k in 0..n {
+        let index = keys[k] & 0xffff_ffff;
+        let word = &mut keys[k / 2];
+        *word = if k % 2 == 0 {
+            index
+        } else {
+            *word | index << 32
+        };
+    }
+    keys.truncate(n.div_ceil(2));
+    keys.shrink_to_fit();
+    keys
+}
+
+/// Value `k` of a [`pack_low_halves`] array.
+#[inline]
+pub(super) fn packed(words: &[u64], k: usize) -> u32 {
+    (words[k / 2] >> (32 * (k % 2))) as u32
+}
+
+/// Sets value `k` of a [`pack_low_halves`] array.
+#[inline]
+pub(super) fn set_packed(words: &mut [u64], k: usize, value: u32) {
+    let shift = 32 * (k % 2);
+    let word = &mut words[k / 2];
+    *word = (*word & !(0xffff_ffff << shift)) | u64::from(value) << shift;
 }
 
 /// The coordinate of a [`sorted_keys`] key.

@@ -5,6 +5,7 @@ use alloc::vec::Vec;
 
 use glam::Vec2;
 
+use super::{key_value, keys_in_place, sorted_keys};
 use crate::Error;
 use crate::metrics::{coord, validate};
 
@@ -39,7 +40,10 @@ use crate::metrics::{coord, validate};
 /// subtree) plus a re-evaluation of O(log n) ancestors; advancing `a`
 /// re-evaluates only nodes whose certificate expired. The amortised bound
 /// known for kinetic segment trees is O(log² n) per update, i.e. O(n log² n)
-/// time in all, with O(n) memory. The leaves are buckets of 32 lines that
+/// time in all, with O(n) memory: about 18 bytes a point beyond the input at
+/// the peak (the distinct y values as f32, each point's x and y rank in one
+/// u64, a u32 count per line and the nodes). The leaves are buckets of 32
+/// lines that
 /// keep their own upper hull, which divides the tree's size (and its cache
 /// misses) by 32. Structured sets (grids, diagonals, Hammersley) cost no more
 /// than uniform random ones. Results are exact up to one f64 rounding per
@@ -72,36 +76,27 @@ pub fn star_discrepancy(points: &[Vec2]) -> Result<f64, Error> {
     let n = points.len();
     let nf = n as f64;
 
-    // Distinct y values sorted, and each point as (x, rank of its y), sorted
-    // by x. Ranks come from one sort rather than a search per point.
-    let mut by_y: Vec<(f64, f64)> = points.iter().map(|p| (coord(p.y), coord(p.x))).collect();
-    by_y.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
-    let mut ys: Vec<f64> = Vec::with_capacity(n);
-    let mut pts: Vec<(f64, u32)> = Vec::with_capacity(n);
-    for &(y, x) in &by_y {
-        if ys.last() != Some(&y) {
-            ys.push(y);
-        }
-        pts.push((x, (ys.len() - 1) as u32));
-    }
-    drop(by_y);
-    pts.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
+    // The distinct y values, sorted: the candidate top edges; and each
+    // point as `x bits << 32 | rank of its y` in increasing x (ties in index
+    // order), read in sequence by both sweeps.
+    let (ys, sweep) = distinct_and_sweep(points);
+    let x_at = |k: usize| coord(key_value(sweep[k]));
+    let rank_at = |k: usize| sweep[k] as u32 as usize;
     let m = ys.len();
 
     // Too few points (open boxes): for each top edge b_j in ys and 1, the line
     // n a b_j - #{x < a, y < b_j}. A point with y rank r lowers slots r+1..=m.
     let mut best_open = f64::NEG_INFINITY;
     {
-        let slopes: Vec<f64> = ys.iter().chain(&[1.0]).map(|&b| nf * b).collect();
-        let mut tree = Kinetic::new(slopes);
-        let mut i = 0;
-        while i < n {
-            let a = pts[i].0;
+        let mut tree = Kinetic::<true>::new(&ys, nf);
+        let mut k = 0;
+        while k < n {
+            let a = x_at(k);
             tree.advance(a);
             best_open = best_open.max(tree.max_at(a));
-            while i < n && pts[i].0 == a {
-                tree.add(pts[i].1 as usize + 1, m + 1, -1.0, a);
-                i += 1;
+            while k < n && x_at(k) == a {
+                tree.add(rank_at(k) + 1, m + 1, a);
+                k += 1;
             }
         }
         tree.advance(1.0);
@@ -113,15 +108,14 @@ pub fn star_discrepancy(points: &[Vec2]) -> Result<f64, Error> {
     // slopes -n b increase); a point with y rank r raises b_r.. = slots 0..m-r.
     let mut best_closed = f64::NEG_INFINITY;
     {
-        let slopes: Vec<f64> = ys.iter().rev().map(|&b| -nf * b).collect();
-        let mut tree = Kinetic::new(slopes);
-        let mut i = 0;
-        while i < n {
-            let a = pts[i].0;
+        let mut tree = Kinetic::<false>::new(&ys, -nf);
+        let mut k = 0;
+        while k < n {
+            let a = x_at(k);
             tree.advance(a);
-            while i < n && pts[i].0 == a {
-                tree.add(0, m - pts[i].1 as usize, 1.0, a);
-                i += 1;
+            while k < n && x_at(k) == a {
+                tree.add(0, m - rank_at(k), a);
+                k += 1;
             }
             tree.advance(a);
             best_closed = best_closed.max(tree.max_at(a));
@@ -129,6 +123,29 @@ pub fn star_discrepancy(points: &[Vec2]) -> Result<f64, Error> {
     }
 
     Ok((best_open.max(best_closed) / nf).max(0.0))
+}
+
+/// The distinct y coordinates of `points` in increasing order (`-0.0` as 0),
+/// and the points as `x bits << 32 | rank of y among them` sorted (by x,
+/// then index). At most 16 bytes a point are alive on the way.
+fn distinct_and_sweep(points: &[Vec2]) -> (Vec<f32>, Vec<u64>) {
+    let keys = sorted_keys(points, |p| p.y);
+    let mut ys: Vec<f32> = Vec::with_capacity(keys.len());
+    let mut rank = vec![0u32; keys.len()];
+    for &key in &keys {
+        let y = key_value(key);
+        if ys.last() != Some(&y) {
+            ys.push(y);
+        }
+        rank[key as u32 as usize] = (ys.len() - 1) as u32;
+    }
+    drop(keys);
+    ys.shrink_to_fit();
+    let mut sweep = keys_in_place(points, |p| p.x);
+    for key in &mut sweep {
+        *key = (*key & !0xffff_ffff) | u64::from(rank[*key as u32 as usize]);
+    }
+    (ys, sweep)
 }
 
 /// One node of the kinetic tree: the winning line of its subtree at the
@@ -148,38 +165,48 @@ struct Node {
     slope: f64,
 }
 
-/// Lines per leaf bucket. A bucket keeps the upper hull of its lines and a
-/// pointer that only moves forward in time; rebuilding it after a partial
-/// update costs O(BUCKET). Buckets cut the tree (and its cache misses) by
-/// this factor.
+/// Lines per leaf bucket. A bucket keeps the upper hull of its lines (as a
+/// bit mask) and a pointer that only moves forward in time; rebuilding it
+/// after a partial update costs O(BUCKET). Buckets cut the tree (and its
+/// cache misses) by this factor.
 const BUCKET: usize = 32;
 
-/// Kinetic segment tree for the upper envelope of lines `slope[j] t + c_j`,
-/// with range updates of the intercepts and a time `t` that only grows.
+/// Kinetic segment tree for the upper envelope of the star discrepancy's
+/// lines `slope_j t + c_j`, with range updates of the intercepts and a time
+/// `t` that only grows.
+///
+/// The lines are those of one sweep: with `OPEN`, slopes `scale b_j` over the
+/// sorted distinct `ys` then `scale` (the top edge 1), and intercepts that
+/// only go down by 1; otherwise slopes `scale b_j` over `ys` in reverse (with
+/// `scale < 0`, so they increase) and intercepts that only go up by 1. Slopes
+/// are computed from `ys` when needed and intercepts kept as counts, so a
+/// line costs 4 bytes plus its share of the nodes.
 ///
 /// Leaves are buckets of [`BUCKET`] consecutive lines. Nodes are laid out in
 /// DFS order: the node for buckets `[lo, hi)` at `v` has its left child at
 /// `v + 1` and its right child at `v + 2 (mid - lo)`, so the tree uses exactly
 /// `2 buckets - 1` nodes.
 #[derive(Debug)]
-struct Kinetic {
-    /// Per line, strictly increasing.
-    slope: Vec<f64>,
-    /// Per line: the intercept without its bucket's shift.
-    raw: Vec<f64>,
-    /// Per bucket `b`: its upper hull in `hull[b BUCKET..][..hull_len[b]]`.
+struct Kinetic<'a, const OPEN: bool> {
+    ys: &'a [f32],
+    scale: f64,
+    /// Per line: how many unit shifts its intercept got, not counting its
+    /// bucket's shift.
+    count: Vec<u32>,
+    /// Per bucket: bit `o` is set when line `o` of the bucket is on its upper hull.
     hull: Vec<u32>,
-    hull_len: Vec<u32>,
-    /// Per bucket: the hull entry that wins at the current time.
-    ptr: Vec<u32>,
+    /// Per bucket: the offset of the hull line that wins at the current time.
+    ptr: Vec<u8>,
     nodes: Vec<Node>,
 }
 
-impl Kinetic {
-    /// Lines with the given slopes (strictly increasing) and zero intercepts, at time 0.
-    fn new(slope: Vec<f64>) -> Self {
-        debug_assert!(slope.windows(2).all(|w| w[0] < w[1]));
-        let len = slope.len();
+impl<'a, const OPEN: bool> Kinetic<'a, OPEN> {
+    /// The unit shift of an update.
+    const DELTA: f64 = if OPEN { -1.0 } else { 1.0 };
+
+    /// The sweep's lines over `ys` (sorted, distinct), with zero intercepts, at time 0.
+    fn new(ys: &'a [f32], scale: f64) -> Self {
+        let len = ys.len() + usize::from(OPEN);
         let buckets = len.div_ceil(BUCKET);
         let leaf = Node {
             intercept: 0.0,
@@ -188,24 +215,45 @@ impl Kinetic {
             slope: 0.0,
         };
         let mut tree = Self {
-            slope,
-            raw: vec![0.0; len],
-            hull: vec![0; len],
-            hull_len: vec![0; buckets],
+            ys,
+            scale,
+            count: vec![0; len],
+            hull: vec![0; buckets],
             ptr: vec![0; buckets],
             nodes: vec![leaf; 2 * buckets - 1],
         };
+        debug_assert!((1..len).all(|j| tree.slope(j - 1) < tree.slope(j)));
         tree.build(0, 0, buckets);
         tree
     }
 
+    /// Slope of line `j`.
+    #[inline]
+    fn slope(&self, j: usize) -> f64 {
+        if OPEN {
+            match self.ys.get(j) {
+                Some(&b) => self.scale * f64::from(b),
+                None => self.scale,
+            }
+        } else {
+            self.scale * f64::from(self.ys[self.ys.len() - 1 - j])
+        }
+    }
+
+    /// Intercept of line `j` without its bucket's shift.
+    #[inline]
+    fn raw(&self, j: usize) -> f64 {
+        let c = f64::from(self.count[j]);
+        if OPEN { 0.0 - c } else { c }
+    }
+
     fn buckets(&self) -> usize {
-        self.hull_len.len()
+        self.hull.len()
     }
 
     /// Slots of bucket `b`.
     fn slots(&self, b: usize) -> core::ops::Range<usize> {
-        b * BUCKET..((b + 1) * BUCKET).min(self.slope.len())
+        b * BUCKET..((b + 1) * BUCKET).min(self.count.len())
     }
 
     fn build(&mut self, v: usize, lo: usize, hi: usize) {
@@ -225,15 +273,37 @@ impl Kinetic {
     fn rebuild_hull(&mut self, b: usize) {
         let slots = self.slots(b);
         let base = slots.start;
+        let (mut slope, mut raw) = ([0.0; BUCKET], [0.0; BUCKET]);
+        // Straight loops over slices, which the compiler vectorises.
+        let m = self.ys.len();
+        if OPEN {
+            let ys = &self.ys[base.min(m)..slots.end.min(m)];
+            for (s, &b) in slope.iter_mut().zip(ys) {
+                *s = self.scale * f64::from(b);
+            }
+            if slots.end > m {
+                slope[m - base] = self.scale;
+            }
+        } else {
+            let ys = &self.ys[m - slots.end..m - base];
+            for (s, &b) in slope.iter_mut().zip(ys.iter().rev()) {
+                *s = self.scale * f64::from(b);
+            }
+        }
+        for (r, &c) in raw.iter_mut().zip(&self.count[slots.clone()]) {
+            *r = if OPEN {
+                0.0 - f64::from(c)
+            } else {
+                f64::from(c)
+            };
+        }
+        // The hull so far: each line's offset, slope and intercept.
+        let (mut offset, mut hs, mut hc) = ([0u8; BUCKET], [0.0; BUCKET], [0.0; BUCKET]);
         let mut len = 0usize;
-        for j in slots {
-            let (sl, cl) = (self.slope[j], self.raw[j]);
+        for o in 0..slots.len() {
+            let (sl, cl) = (slope[o], raw[o]);
             while len >= 2 {
-                let (i1, i2) = (
-                    self.hull[base + len - 2] as usize,
-                    self.hull[base + len - 1] as usize,
-                );
-                let (s1, c1, s2, c2) = (self.slope[i1], self.raw[i1], self.slope[i2], self.raw[i2]);
+                let (s1, c1, s2, c2) = (hs[len - 2], hc[len - 2], hs[len - 1], hc[len - 1]);
                 // Line 2 never wins if line l overtakes it no later than it
                 // overtakes line 1.
                 if (c1 - c2) * (sl - s2) >= (c2 - cl) * (s2 - s1) {
@@ -242,10 +312,11 @@ impl Kinetic {
                     break;
                 }
             }
-            self.hull[base + len] = j as u32;
+            (offset[len], hs[len], hc[len]) = (o as u8, sl, cl);
             len += 1;
         }
-        self.hull_len[b] = len as u32;
+        self.hull[b] = offset[..len].iter().fold(0, |mask, &o| mask | 1 << o);
+        // The first line is never popped.
         self.ptr[b] = 0;
     }
 
@@ -253,29 +324,36 @@ impl Kinetic {
     #[inline]
     fn eval_leaf(&mut self, v: usize, b: usize, t: f64) {
         let base = b * BUCKET;
-        let len = self.hull_len[b] as usize;
+        let mask = u64::from(self.hull[b]);
+        // The hull line after offset `p`, if any.
+        let next_on_hull = |p: usize| {
+            let above = mask >> (p + 1);
+            (above != 0).then(|| p + 1 + above.trailing_zeros() as usize)
+        };
+        let value = |o: usize| self.slope(base + o) * t + self.raw(base + o);
         let mut p = self.ptr[b] as usize;
-        let value = |j: u32| self.slope[j as usize] * t + self.raw[j as usize];
-        let mut current = value(self.hull[base + p]);
-        while p + 1 < len {
-            let next = value(self.hull[base + p + 1]);
+        let mut current = value(p);
+        while let Some(q) = next_on_hull(p) {
+            let next = value(q);
             if next < current {
                 break;
             }
             current = next;
-            p += 1;
+            p = q;
         }
-        self.ptr[b] = p as u32;
-        let w = self.hull[base + p] as usize;
-        let melt = if p + 1 < len {
-            let n = self.hull[base + p + 1] as usize;
-            (self.raw[w] - self.raw[n]) / (self.slope[n] - self.slope[w])
-        } else {
-            f64::INFINITY
+        self.ptr[b] = p as u8;
+        let w = base + p;
+        let melt = match next_on_hull(p) {
+            Some(q) => {
+                let n = base + q;
+                (self.raw(w) - self.raw(n)) / (self.slope(n) - self.slope(w))
+            }
+            None => f64::INFINITY,
         };
+        let (slope, raw) = (self.slope(w), self.raw(w));
         let node = &mut self.nodes[v];
-        node.slope = self.slope[w];
-        node.intercept = self.raw[w] + node.lazy;
+        node.slope = slope;
+        node.intercept = raw + node.lazy;
         node.melt = melt;
     }
 
@@ -316,29 +394,29 @@ impl Kinetic {
         }
     }
 
-    /// Adds `delta` (±1) to the intercepts of lines `lo..hi`, at time `t`
-    /// (the tree must already be advanced to `t`).
-    fn add(&mut self, lo: usize, hi: usize, delta: f64, t: f64) {
+    /// Shifts the intercepts of lines `lo..hi` by one unit ([`Self::DELTA`]),
+    /// at time `t` (the tree must already be advanced to `t`).
+    fn add(&mut self, lo: usize, hi: usize, t: f64) {
         if lo < hi {
-            self.add_in(0, 0, self.buckets(), (lo, hi), delta, t);
+            self.add_in(0, 0, self.buckets(), (lo, hi), t);
         }
     }
 
-    fn add_in(&mut self, v: usize, lo: usize, hi: usize, range: (usize, usize), d: f64, t: f64) {
-        let (first, end) = (lo * BUCKET, (hi * BUCKET).min(self.slope.len()));
+    fn add_in(&mut self, v: usize, lo: usize, hi: usize, range: (usize, usize), t: f64) {
+        let (first, end) = (lo * BUCKET, (hi * BUCKET).min(self.count.len()));
         let (ql, qr) = range;
         if qr <= first || end <= ql {
             return;
         }
         if ql <= first && end <= qr {
             // A uniform shift keeps every winner inside the subtree.
-            self.nodes[v].intercept += d;
-            self.nodes[v].lazy += d;
+            self.nodes[v].intercept += Self::DELTA;
+            self.nodes[v].lazy += Self::DELTA;
             return;
         }
         if hi - lo == 1 {
-            for c in &mut self.raw[ql.max(first)..qr.min(end)] {
-                *c += d;
+            for c in &mut self.count[ql.max(first)..qr.min(end)] {
+                *c += 1;
             }
             self.rebuild_hull(lo);
             self.eval_leaf(v, lo, t);
@@ -347,8 +425,8 @@ impl Kinetic {
         let mid = (lo + hi) / 2;
         let (left, right) = (v + 1, v + 2 * (mid - lo));
         self.push(v, left, right);
-        self.add_in(left, lo, mid, range, d, t);
-        self.add_in(right, mid, hi, range, d, t);
+        self.add_in(left, lo, mid, range, t);
+        self.add_in(right, mid, hi, range, t);
         self.pull(v, left, right, t);
     }
 
@@ -385,13 +463,20 @@ impl Kinetic {
 mod tests {
     use super::*;
 
-    #[test]
-    fn kinetic_tree_tracks_the_envelope() {
-        // Lines j t + c_j for a few slopes, with range updates.
-        // Enough lines for several buckets; a fixed pseudo-random update stream.
-        let len = 5 * BUCKET + 3;
-        let slopes: Vec<f64> = (0..len).map(|j| j as f64 * 0.37 - 20.0).collect();
-        let mut tree = Kinetic::new(slopes.clone());
+    /// The tree's envelope against a direct maximum over the lines, under a
+    /// fixed pseudo-random stream of range updates, for one sweep direction.
+    fn tracks_the_envelope<const OPEN: bool>(scale: f64) {
+        // Enough lines for several buckets.
+        let ys: Vec<f32> = (0..5 * BUCKET + 2)
+            .map(|j| (j as f32 * 0.37 + 0.1) / 64.0)
+            .collect();
+        let mut tree = Kinetic::<OPEN>::new(&ys, scale);
+        let len = ys.len() + usize::from(OPEN);
+        let slope = |j: usize| match (OPEN, ys.get(j)) {
+            (true, Some(&b)) => scale * f64::from(b),
+            (true, None) => scale,
+            (false, _) => scale * f64::from(ys[ys.len() - 1 - j]),
+        };
         let mut c = vec![0.0; len];
         let mut state = 12345u64;
         let mut t = 0.0;
@@ -402,18 +487,23 @@ mod tests {
             let a = (state >> 33) as usize % (len + 1);
             let b = (state >> 13) as usize % (len + 1);
             let (lo, hi) = (a.min(b), a.max(b));
-            let d = if state & 1 == 0 { 1.0 } else { -1.0 };
             tree.advance(t);
-            tree.add(lo, hi, d, t);
+            tree.add(lo, hi, t);
             for cj in &mut c[lo..hi] {
-                *cj += d;
+                *cj += Kinetic::<OPEN>::DELTA;
             }
             tree.advance(t);
             let want = (0..len)
-                .map(|j| slopes[j] * t + c[j])
+                .map(|j| slope(j) * t + c[j])
                 .fold(f64::MIN, f64::max);
             assert!((tree.max_at(t) - want).abs() < 1e-9, "t = {t}");
             t += ((state >> 40) % 7) as f64 * 0.01;
         }
+    }
+
+    #[test]
+    fn kinetic_tree_tracks_the_envelope() {
+        tracks_the_envelope::<true>(40.0);
+        tracks_the_envelope::<false>(-40.0);
     }
 }

@@ -6,7 +6,7 @@ use alloc::vec::Vec;
 
 use glam::Vec2;
 
-use super::{key_value, sorted_keys};
+use super::{key_value, keys_in_place, pack_low_halves, packed, set_packed, sorted_keys};
 use crate::Error;
 use crate::metrics::double_double::{Dd, two_prod, two_sum};
 use crate::metrics::{coord, validate};
@@ -38,7 +38,10 @@ use crate::metrics::{coord, validate};
 ///   (in exact 128-bit integers when every coordinate is a multiple of 2^-32,
 ///   as sampler output is; in double-double otherwise).
 ///
-/// O(n log n) time (two radix sorts and the sweeps), O(n) memory. The terms
+/// O(n log n) time (two radix sorts, one in place, and the sweeps), O(n)
+/// memory: about 16 bytes a point at the peak beyond the input (20 for a set
+/// with coordinates off the 2^-32 grid, whose double-double tree is larger).
+/// The terms
 /// are of order `n²` and cancel down to `n² WD²`, which is as small as `1e-8 n²`
 /// for good sets at 2^14 points, so every sum is accumulated in double-double
 /// arithmetic (Dekker 1971): products of f32 coordinates are exact there, and
@@ -100,39 +103,57 @@ fn wraparound_sweep(points: &[Vec2]) -> f64 {
         .add(s[2][0].mul(s[0][2]).mul_f64(2.0))
         .add(s[1][1].mul(s[1][1]).mul_f64(4.0));
 
-    // The sweeps read the coordinates in sorted order, gathered once so that
-    // they stream through memory; one order at a time, so that at most one
-    // pair of gathered copies is alive.
-    let sorted = |keys: &[u64], other: fn(&Vec2) -> f32| -> (Vec<f64>, Vec<f64>) {
-        let by = keys.iter().map(|&k| coord(key_value(k))).collect();
-        let rest = keys
-            .iter()
-            .map(|&k| coord(other(&points[k as u32 as usize])))
-            .collect();
-        (by, rest)
-    };
-    let mut rank = vec![0u32; n];
-    let (abs_dy, dx2_abs_dy) = {
-        let keys_y = sorted_keys(points, |p| p.y);
-        for (r, &k) in keys_y.iter().enumerate() {
-            rank[k as u32 as usize] = r as u32;
-        }
-        let (y_by_y, x_by_y) = sorted(&keys_y, |p| p.x);
-        drop(keys_y);
-        absolute_sweep(&y_by_y, &x_by_y)
-    };
+    // The x order first, kept as point indices packed two to a u64; then
+    // the y order, kept as each rank's y and x bits; the indices of the x
+    // order then become ranks. At most 16 bytes a point are alive.
     let keys_x = sorted_keys(points, |p| p.x);
-    let rank_by_x: Vec<u32> = keys_x.iter().map(|&k| rank[k as u32 as usize]).collect();
+    // The other coordinate is gathered first (as f32, 4 bytes a point) by
+    // a short loop, whose random loads overlap.
+    let gather = |keys: &[u64], axis: fn(&Vec2) -> f32| -> Vec<f32> {
+        keys.iter()
+            .map(|&k| axis(&points[k as u32 as usize]))
+            .collect()
+    };
+    let y_by_x = gather(&keys_x, |p| p.y);
+    let (abs_dx, abs_dx_dy2) = absolute_sweep(
+        n,
+        keys_x
+            .iter()
+            .zip(&y_by_x)
+            .map(|(&k, &y)| (coord(key_value(k)), coord(y))),
+    );
+    drop(y_by_x);
+    let mut order = pack_low_halves(keys_x);
+    let mut by_rank = keys_in_place(points, |p| p.y);
+    let x_by_y = gather(&by_rank, |p| p.x);
+    let (abs_dy, dx2_abs_dy) = absolute_sweep(
+        n,
+        by_rank
+            .iter()
+            .zip(&x_by_y)
+            .map(|(&k, &x)| (coord(key_value(k)), coord(x))),
+    );
+    drop(x_by_y);
+    let fixed = fits_fixed(points);
+    let mut rank = vec![0u32; n];
+    for (r, key) in by_rank.iter_mut().enumerate() {
+        let i = *key as u32 as usize;
+        rank[i] = r as u32;
+        *key = Sweep::encode(points[i], fixed);
+    }
+    for k in 0..n {
+        let r = rank[packed(&order, k) as usize];
+        set_packed(&mut order, k, r);
+    }
     drop(rank);
-    let (x_by_x, y_by_x) = sorted(&keys_x, |p| p.y);
-    drop(keys_x);
-    let (abs_dx, abs_dx_dy2) = absolute_sweep(&x_by_x, &y_by_x);
-    let concordant = match to_fixed(&x_by_x, &y_by_x, &rank_by_x) {
-        Some(fixed) => {
-            drop((x_by_x, y_by_x, rank_by_x));
-            dominance_sweep_fixed(&fixed)
-        }
-        None => dominance_sweep(&x_by_x, &y_by_x, &rank_by_x),
+    let sweep = Sweep {
+        order: &order,
+        by_rank: &by_rank,
+    };
+    let concordant = if fixed {
+        dominance_sweep_fixed(&sweep)
+    } else {
+        dominance_sweep(&sweep)
     };
     // Σ_{i<j} (x_j - x_i)(y_j - y_i) over unordered pairs = n S11 - S10 S01.
     let product = s[1][1].mul_f64(nf).sub(s[1][0].mul(s[0][1]));
@@ -153,10 +174,33 @@ fn wraparound_sweep(points: &[Vec2]) -> f64 {
     total.value() / (nf * nf)
 }
 
+/// The items of `items`, taken `CHUNK` at a time: the random loads that
+/// producing an item makes are then issued by one short loop, where they
+/// overlap, rather than one per step of a sweep's long loop body.
+fn read_ahead<T: Copy + Default>(mut items: impl Iterator<Item = T>) -> impl Iterator<Item = T> {
+    const CHUNK: usize = 256;
+    let mut buffer = [T::default(); CHUNK];
+    let (mut len, mut next) = (0, 0);
+    core::iter::from_fn(move || {
+        if next == len {
+            len = 0;
+            for (slot, item) in buffer.iter_mut().zip(&mut items) {
+                *slot = item;
+                len += 1;
+            }
+            next = 0;
+        }
+        (next < len).then(|| {
+            next += 1;
+            buffer[next - 1]
+        })
+    })
+}
+
 /// Over the unordered pairs, with `u` in increasing order:
 /// `(Σ |u_j - u_i|, Σ |u_j - u_i| (v_j - v_i)²)`, in double-double.
-fn absolute_sweep(u: &[f64], v: &[f64]) -> (Dd, Dd) {
-    let n = u.len() as f64;
+fn absolute_sweep(n: usize, uv: impl Iterator<Item = (f64, f64)>) -> (Dd, Dd) {
+    let n = n as f64;
     let mut abs = Dd::ZERO;
     // Prefix sums over the earlier points: u, v, v², u v, u v².
     let (mut a, mut b, mut c, mut d, mut e) = (Dd::ZERO, Dd::ZERO, Dd::ZERO, Dd::ZERO, Dd::ZERO);
@@ -164,7 +208,7 @@ fn absolute_sweep(u: &[f64], v: &[f64]) -> (Dd, Dd) {
     // taken from the point is an f32 value (or the count k), so the products
     // are the cheap short ones.
     let mut p = [Dd::ZERO; 6];
-    for (k, (&uj, &vj)) in u.iter().zip(v).enumerate() {
+    for (k, (uj, vj)) in uv.enumerate() {
         // The k-th smallest u is the larger of k pairs and the smaller of n-1-k.
         abs = abs.plus(two_prod(uj, 2.0 * k as f64 - n + 1.0));
         let uv = uj * vj;
@@ -205,87 +249,133 @@ struct DominanceNode {
     xy: Dd,
 }
 
+/// The points in increasing x (ties in index order) as their y ranks
+/// (packed two to a u64), and per y rank the point's coordinates as
+/// `y << 32 | x`, each as its f32 bits or, for [`dominance_sweep_fixed`],
+/// as `2^32` times its value.
+struct Sweep<'a> {
+    order: &'a [u64],
+    by_rank: &'a [u64],
+}
+
+impl Sweep<'_> {
+    /// A point's entry of `by_rank`.
+    fn encode(p: Vec2, fixed: bool) -> u64 {
+        let code = |v: f32| {
+            if fixed {
+                (coord(v) * 4_294_967_296.0) as u32
+            } else {
+                f32::to_bits(v) & 0x7fff_ffff
+            }
+        };
+        u64::from(code(p.y)) << 32 | u64::from(code(p.x))
+    }
+
+    fn len(&self) -> usize {
+        self.by_rank.len()
+    }
+
+    /// The y rank of the k-th point in x order.
+    #[inline]
+    fn rank(&self, k: usize) -> usize {
+        packed(self.order, k) as usize
+    }
+
+    /// The coordinates of the point of y rank `r`, as encoded.
+    #[inline]
+    fn point(&self, r: usize) -> (u32, u32) {
+        let key = self.by_rank[r];
+        (key as u32, (key >> 32) as u32)
+    }
+
+    /// The coordinates of the point of y rank `r`, of f32 bits.
+    #[inline]
+    fn float_point(&self, r: usize) -> (f64, f64) {
+        let (x, y) = self.point(r);
+        (f64::from(f32::from_bits(x)), f64::from(f32::from_bits(y)))
+    }
+}
+
 /// `Σ (x_j - x_i)(y_j - y_i)` over the pairs with `x_i <= x_j` and `y_i < y_j`
 /// (pairs tied in x or y add 0 whichever way they are counted), given the
 /// points in increasing x with the ranks of their y.
-fn dominance_sweep(xs: &[f64], ys: &[f64], ranks: &[u32]) -> Dd {
-    let n = xs.len();
+fn dominance_sweep(sweep: &Sweep) -> Dd {
+    let n = sweep.len();
     // Two levels: a Fenwick tree over blocks of RUN consecutive ranks, and
-    // per rank the point's x and y once inserted (and a 1 for the count).
-    // The partial block below a rank is a short scan of one or two cache
-    // lines, and the tree is RUN times smaller, so fewer of its levels miss
-    // the cache.
+    // per block a bit per rank whose point is inserted (its coordinates
+    // come from `sweep`). The partial block below a rank is a short scan,
+    // and the tree is RUN times smaller, so fewer of its levels miss the
+    // cache.
     const RUN: usize = 8;
     let blocks = n.div_ceil(RUN);
     let mut tree = vec![DominanceNode::default(); blocks + 1];
-    let mut slots = vec![[0.0f64; 3]; n];
+    let mut inserted = vec![0u8; blocks];
     // Σ_j of: count x_j y_j, x_j Σy, y_j Σx, Σ x y over the points below j.
     let mut t = [Dd::ZERO; 4];
-    for ((&xj, &yj), &r) in xs.iter().zip(ys).zip(ranks) {
-        let r = r as usize;
+    for (r, (xj, yj)) in read_ahead((0..n).map(|k| {
+        let r = sweep.rank(k);
+        (r, sweep.float_point(r))
+    })) {
         let block = r / RUN;
         let mut below = DominanceNode::default();
-        for &[x, y, c] in &slots[block * RUN..r] {
-            below.count += c;
+        // The inserted ranks of the block below r, in increasing order (an
+        // empty rank would add zeros).
+        let mut bits = inserted[block] & ((1u16 << (r % RUN)) - 1) as u8;
+        while bits != 0 {
+            let (x, y) = sweep.float_point(block * RUN + bits.trailing_zeros() as usize);
+            bits &= bits - 1;
+            below.count += 1.0;
             below.x = below.x.plus_f64(x);
             below.y = below.y.plus_f64(y);
             below.xy = below.xy.plus_f64(x * y);
         }
-        let mut k = block;
-        while k > 0 {
-            let node = &tree[k];
+        let mut b = block;
+        while b > 0 {
+            let node = &tree[b];
             below.count += node.count;
             below.x = below.x.plus(node.x);
             below.y = below.y.plus(node.y);
             below.xy = below.xy.plus(node.xy);
-            k &= k - 1;
+            b &= b - 1;
         }
         let xy = xj * yj;
         t[0] = t[0].plus(two_prod(below.count, xy));
         t[1] = t[1].plus(below.y.mul_short(xj));
         t[2] = t[2].plus(below.x.mul_short(yj));
         t[3] = t[3].plus(below.xy);
-        slots[r] = [xj, yj, 1.0];
-        let mut k = block + 1;
-        while k <= blocks {
-            let node = &mut tree[k];
+        inserted[block] |= 1 << (r % RUN);
+        let mut b = block + 1;
+        while b <= blocks {
+            let node = &mut tree[b];
             node.count += 1.0;
             node.x = node.x.plus_f64(xj);
             node.y = node.y.plus_f64(yj);
             node.xy = node.xy.plus_f64(xy);
-            k += k & k.wrapping_neg();
+            b += b & b.wrapping_neg();
         }
     }
     t[0].sub(t[1]).sub(t[2]).add(t[3])
 }
 
-/// The points for [`dominance_sweep_fixed`] as `[X, Y, rank]` with
-/// `X = 2^32 x`, when every coordinate is a multiple of 2^-32 (as every
-/// sampler's output and every f32 at or above 2^-8 is) and n is below 2^31;
-/// `None` otherwise.
-fn to_fixed(xs: &[f64], ys: &[f64], ranks: &[u32]) -> Option<Vec<[u32; 3]>> {
-    const ONE: f64 = 4_294_967_296.0; // 2^32
-    if xs.len() >= 1 << 31 {
-        return None;
-    }
-    // Coordinates are below 1, so X fits in a u32.
-    let fixed = |v: f64| {
-        let scaled = v * ONE;
-        (scaled == libm::floor(scaled)).then_some(scaled as u32)
+/// Whether [`dominance_sweep_fixed`] applies: every coordinate a multiple
+/// of 2^-32 (as every sampler's output and every f32 at or above 2^-8 is),
+/// and n below 2^31.
+fn fits_fixed(points: &[Vec2]) -> bool {
+    let on_grid = |v: f32| {
+        let scaled = coord(v) * 4_294_967_296.0;
+        scaled == libm::floor(scaled)
     };
-    let mut points = Vec::with_capacity(xs.len());
-    for ((&x, &y), &r) in xs.iter().zip(ys).zip(ranks) {
-        points.push([fixed(x)?, fixed(y)?, r]);
-    }
-    Some(points)
+    points.len() < 1 << 31 && points.iter().all(|p| on_grid(p.x) && on_grid(p.y))
 }
 
-/// [`dominance_sweep`] in exact integer arithmetic, on the points of
-/// [`to_fixed`]. The Fenwick sums of `X`, `Y` and `X Y` and the four sums
-/// over `j` stay below `n² 2^64`, so u128 holds them exactly for n up to 2^31.
-fn dominance_sweep_fixed(points: &[[u32; 3]]) -> Dd {
+/// [`dominance_sweep`] in exact integer arithmetic, with `X = 2^32 x`, for
+/// the points of [`fits_fixed`] sets. The Fenwick
+/// sums of `X`, `Y` and `X Y` and the four sums over `j` stay below
+/// `n² 2^64`, so u128 holds them exactly for n up to 2^31; being exact, they
+/// do not depend on the tree's shape, whose blocks are twice as long here.
+fn dominance_sweep_fixed(sweep: &Sweep) -> Dd {
     const ONE: f64 = 4_294_967_296.0; // 2^32
-    let n = points.len();
+    let n = sweep.len();
     #[derive(Clone, Copy, Default)]
     struct Node {
         count: u64,
@@ -293,46 +383,51 @@ fn dominance_sweep_fixed(points: &[[u32; 3]]) -> Dd {
         y: u64,
         xy: u128,
     }
-    // As in `dominance_sweep`: a tree over blocks of RUN ranks, and per rank
-    // the inserted point's X, Y and a 1.
-    const RUN: usize = 8;
+    // As in `dominance_sweep`: a tree over blocks of RUN ranks, and per
+    // block a bit per inserted rank.
+    const RUN: usize = 16;
     let blocks = n.div_ceil(RUN);
     let mut tree = vec![Node::default(); blocks + 1];
-    let mut slots = vec![[0u32; 3]; n];
+    let mut inserted = vec![0u16; blocks];
     let mut t = [0u128; 4];
-    for &[xj, yj, r] in points {
-        let r = r as usize;
+    for (r, (xj, yj)) in read_ahead((0..n).map(|k| {
+        let r = sweep.rank(k);
+        (r, sweep.point(r))
+    })) {
         let block = r / RUN;
         let mut below = Node::default();
-        for &[x, y, c] in &slots[block * RUN..r] {
-            below.count += u64::from(c);
+        let mut bits = inserted[block] & ((1u32 << (r % RUN)) - 1) as u16;
+        while bits != 0 {
+            let (x, y) = sweep.point(block * RUN + bits.trailing_zeros() as usize);
+            bits &= bits - 1;
+            below.count += 1;
             below.x += u64::from(x);
             below.y += u64::from(y);
             below.xy += u128::from(x) * u128::from(y);
         }
-        let mut k = block;
-        while k > 0 {
-            let node = &tree[k];
+        let mut b = block;
+        while b > 0 {
+            let node = &tree[b];
             below.count += node.count;
             below.x += node.x;
             below.y += node.y;
             below.xy += node.xy;
-            k &= k - 1;
+            b &= b - 1;
         }
         let xy = u128::from(xj) * u128::from(yj);
         t[0] += u128::from(below.count) * xy;
         t[1] += u128::from(below.y) * u128::from(xj);
         t[2] += u128::from(below.x) * u128::from(yj);
         t[3] += below.xy;
-        slots[r] = [xj, yj, 1];
-        let mut k = block + 1;
-        while k <= blocks {
-            let node = &mut tree[k];
+        inserted[block] |= 1 << (r % RUN);
+        let mut b = block + 1;
+        while b <= blocks {
+            let node = &mut tree[b];
             node.count += 1;
             node.x += u64::from(xj);
             node.y += u64::from(yj);
             node.xy += xy;
-            k += k & k.wrapping_neg();
+            b += b & b.wrapping_neg();
         }
     }
     // Σ (X_j - X_i)(Y_j - Y_i) >= 0 over the pairs, exactly, then times 2^-64.
@@ -456,8 +551,22 @@ mod tests {
             for (r, &i) in by_y.iter().enumerate() {
                 ranks[i] = r as u32;
             }
-            let fixed = dominance_sweep_fixed(&to_fixed(&xs, &ys, &ranks).unwrap());
-            let float = dominance_sweep(&xs, &ys, &ranks);
+            let mut order = vec![0u64; n.div_ceil(2)];
+            let (mut fixed_by_rank, mut float_by_rank) = (vec![0u64; n], vec![0u64; n]);
+            for k in 0..n {
+                set_packed(&mut order, k, ranks[k]);
+                let p = Vec2::new(xs[k] as f32, ys[k] as f32);
+                fixed_by_rank[ranks[k] as usize] = Sweep::encode(p, true);
+                float_by_rank[ranks[k] as usize] = Sweep::encode(p, false);
+            }
+            let fixed = dominance_sweep_fixed(&Sweep {
+                order: &order,
+                by_rank: &fixed_by_rank,
+            });
+            let float = dominance_sweep(&Sweep {
+                order: &order,
+                by_rank: &float_by_rank,
+            });
             let mut brute = 0.0;
             for j in 0..n {
                 for i in 0..j {
@@ -470,6 +579,7 @@ mod tests {
             assert!(diff <= 1e-28 * fixed.value().max(1.0), "n = {n}: {diff:e}");
             assert!((fixed.value() - brute).abs() <= 1e-12 * brute.max(1.0));
         }
-        assert_eq!(to_fixed(&[1e-30], &[0.5], &[0]), None);
+        assert!(fits_fixed(&[Vec2::new(0.25, 0.5), Vec2::new(0.0, 0.75)]));
+        assert!(!fits_fixed(&[Vec2::new(0.25, 0.5), Vec2::new(1e-30, 0.5)]));
     }
 }
