@@ -9,6 +9,7 @@
 use proptest::prelude::*;
 use wellspread::glam::Vec2;
 use wellspread::metrics::is_net_base2;
+use wellspread::primitives::hash_u32;
 use wellspread::{BlueNoise, Error, Padded, PixelSampler, Sobol};
 
 proptest! {
@@ -150,6 +151,79 @@ fn no_repetition_at_256_or_65536_pixels() {
     assert_eq!(firsts.len(), 64 * 64);
 }
 
+#[test]
+fn each_sample_splits_the_film_in_halves() {
+    // At one sample index, a pixel's coordinate falls below 1/2 for about
+    // half the pixels of a film, as with independent pixels: a renderer's
+    // first draw (a light choice, say) must not pick the same half in
+    // every pixel. (A table whose columns never touched the top digit put
+    // every pixel of a sample in the same half.) Over 64 x 64 pixels,
+    // frames 0 to 3, pairs 0 to 2 and samples 0 to 3.
+    for frame in 0..4 {
+        let sampler = BlueNoise::new(16, [64, 64], frame).unwrap();
+        for dimension in 0..3 {
+            for index in 0..4 {
+                let mut below = [0u32; 2];
+                for p in 0..64 * 64 {
+                    let q = sampler.sample_pixel([p % 64, p / 64], index, dimension);
+                    below[0] += u32::from(q.x < 0.5);
+                    below[1] += u32::from(q.y < 0.5);
+                }
+                for (axis, count) in below.into_iter().enumerate() {
+                    let fraction = f64::from(count) / 4096.0;
+                    assert!(
+                        (0.4..=0.6).contains(&fraction),
+                        "frame {frame} pair {dimension} index {index} axis {axis}: {fraction:.3} below 1/2"
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// Chi-square over 16 x 16 cells of the first coordinates of two
+/// dimension pairs at the same pixel and index, over a 64 x 64 film at 16
+/// samples per pixel (65,536 points, 255 degrees of freedom).
+fn pair_chi_square(sampler: &dyn PixelSampler, a: u32, b: u32) -> f64 {
+    let mut counts = vec![0u32; 256];
+    for p in 0..64 * 64 {
+        for i in 0..16 {
+            let pixel = [p % 64, p / 64];
+            let u = sampler.sample_pixel(pixel, i, a).x;
+            let v = sampler.sample_pixel(pixel, i, b).x;
+            counts[(u * 16.0) as usize * 16 + (v * 16.0) as usize] += 1;
+        }
+    }
+    counts
+        .iter()
+        .map(|&c| (f64::from(c) - 256.0).powi(2) / 256.0)
+        .sum()
+}
+
+#[test]
+fn unrelated_pairs_are_independent_at_each_pixel() {
+    // A Domain's consecutive draws are dimension pairs picked by unrelated
+    // hashes; here 32 frames, each with its own two hashed pairs. Every
+    // pair's shifts are blue across pixels, but the two pairs' shifts at
+    // one pixel must look independent across the film: the chi-square of
+    // their first coordinates stays near its 255 degrees of freedom
+    // (Padded<Sobol> measures a median of 240 and at most 320 over such
+    // choices).
+    let mut chis: Vec<f64> = (0..32u32)
+        .map(|k| {
+            let sampler = BlueNoise::new(16, [64, 64], k).unwrap();
+            let (a, b) = (hash_u32(2 * k + 1000), hash_u32(2 * k + 1001));
+            pair_chi_square(&sampler, a, b)
+        })
+        .collect();
+    chis.sort_by(f64::total_cmp);
+    let (median, max) = (chis[16], chis[31]);
+    // Measured: median 251, largest 1,067 (the one outlier; the next is
+    // 456); the previous table, 4,234 and 67,818 over 48 such frames.
+    assert!(median < 300.0, "median chi-square {median:.0}: {chis:?}");
+    assert!(max < 1500.0, "largest chi-square {max:.0}: {chis:?}");
+}
+
 /// Per-pixel and blurred errors of a `size x size` render, per prefix.
 struct Errors {
     /// Mean squared error per prefix `n = 1..=spp`, summed over frames.
@@ -281,17 +355,18 @@ fn per_pixel_error_is_that_of_padded_sobol_at_every_prefix() {
 #[test]
 fn error_is_blue_at_every_prefix() {
     // 128 x 128 pixels, 8 frames, pairs 0 and 2: the blurred RMSE against
-    // Padded<Sobol>'s on the same prefixes. docs/blue_noise.md measures
-    // 256 x 256 over 16 frames; this smaller film is noisier, so the
-    // bound is looser than the targets (0.9 everywhere, 0.6 at
-    // powers of two, which the footprint integrand misses: see the docs).
+    // Padded<Sobol>'s on the same prefixes (measured: Gaussian 0.23 to
+    // 0.49, footprint 0.65 to 0.78). docs/blue_noise.md measures 256 x 256
+    // over 16 frames; this smaller film is noisier, so the footprint bound
+    // is looser than the 0.9 (and its 0.6 at powers of two, which
+    // the footprint misses: see the docs).
     for dimension in [0, 2] {
         for footprint in [false, true] {
             let base = errors(padded, 128, 16, 0..8, footprint, dimension, true);
             let ours = errors(blue_noise(128), 128, 16, 0..8, footprint, dimension, true);
             for n in 0..16 {
                 let ratio = (ours.blurred[n] / base.blurred[n]).sqrt();
-                let bound = if footprint { 0.97 } else { 0.6 };
+                let bound = if footprint { 0.86 } else { 0.6 };
                 assert!(
                     ratio < bound,
                     "pair {dimension} footprint {footprint} n {}: blurred RMSE ratio {ratio:.3}",
