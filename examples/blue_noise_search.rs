@@ -404,6 +404,8 @@ mod coherent {
     use wellspread::primitives::{hash_u32, owen_scramble, owen_scramble_reversed};
     use wellspread::{Padded, PixelSampler, Sobol};
 
+    use super::pascal_reversed;
+
     const SIZE: usize = 128;
     const SPP: usize = 16;
     const FRAMES: u32 = 8;
@@ -411,16 +413,6 @@ mod coherent {
     const SEARCHED: usize = 8;
     /// Digits of each searched vector the climb flips.
     const DIGITS: u32 = 10;
-
-    fn pascal_reversed(index: u32) -> u32 {
-        let mut y = index;
-        y ^= (y >> 1) & 0x5555_5555;
-        y ^= (y >> 2) & 0x3333_3333;
-        y ^= (y >> 4) & 0x0f0f_0f0f;
-        y ^= (y >> 8) & 0x00ff_00ff;
-        y ^= y >> 16;
-        y
-    }
 
     fn gauss(p: Vec2, _x: usize, _y: usize) -> f64 {
         let (u, v) = (f64::from(p.x) - 0.5, f64::from(p.y) - 0.5);

@@ -6,6 +6,8 @@
 use glam::Vec2;
 
 use crate::primitives::{hash_combine, hash_u32, owen_scramble, owen_scramble_reversed};
+// Sobol dimension 1 in reversed bit order (the Pascal matrix mod 2).
+use crate::samplers::sequence::sobol::pascal_reversed;
 use crate::{Error, PixelSampler};
 
 /// Salts that split a dimension pair's seed into the index shuffle's and
@@ -313,19 +315,6 @@ const fn spread_bits(v: u32) -> u32 {
     v = (v | v << 2) & 0x3333_3333;
     v = (v | v << 1) & 0x5555_5555;
     v
-}
-
-/// Sobol dimension 1 in reversed bit order (the Pascal matrix mod 2); the
-/// same five steps as [`Sobol`](crate::Sobol)'s.
-#[inline(always)]
-const fn pascal_reversed(index: u32) -> u32 {
-    let mut y = index;
-    y ^= (y >> 1) & 0x5555_5555;
-    y ^= (y >> 2) & 0x3333_3333;
-    y ^= (y >> 4) & 0x0f0f_0f0f;
-    y ^= (y >> 8) & 0x00ff_00ff;
-    y ^= y >> 16;
-    y
 }
 
 /// `2^-24 t` for `t < 2^24`, exactly.
