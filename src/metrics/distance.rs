@@ -33,11 +33,15 @@ use crate::Error;
 /// that bound, kept as radix-sorted cell keys, compares O(1) pairs per point.
 /// The first shift alone is tried first; the other two are added only if
 /// that pass meets more than `16 n` pairs. Every step is a linear pass or a
-/// radix sort of 64-bit keys (six linear passes; about 84 bytes a point at
-/// the peak, 120 for the toroidal distance with its ghost copies), so the
-/// worst case is within O(n log n), in fact linear, for sets whose closest pair is at least 2^-31
-/// of their bounding box apart (below that the z-order cannot see the pair and
-/// the pass may compare more pairs; the result stays exact).
+/// radix sort of 64-bit keys (six linear passes) that hold a key's top bits
+/// over the point's index; keys that share those bits are then sorted by
+/// their whole key, computed again from the point (O(r log r) for r of
+/// them). The peak is about 16 bytes a
+/// point, and 16 more for each ghost copy on the torus. The worst case is
+/// within O(n log n), in fact linear, for sets whose closest pair is at
+/// least 2^-31 of their bounding box apart (below that the z-order cannot
+/// see the pair and the pass may compare more pairs; the result stays
+/// exact).
 ///
 /// # Errors
 ///
@@ -400,26 +404,27 @@ fn closest_pair_squared(points: &[Vec2], torus: bool) -> f64 {
 fn robust_closest_pair_squared(points: &[Vec2], torus: bool) -> f64 {
     let n = points.len();
     let plane = [false, false];
-    let at = |i: u32| {
+    let at = |i: u64| {
         let p = points[i as usize];
         (coord(p.x), coord(p.y))
     };
-    let dist = |i: u32, j: u32, wrap: [bool; 2]| {
+    let dist = |i: u64, j: u64, wrap: [bool; 2]| {
         let (a, b) = (at(i), at(j));
         dist2(a.0, a.1, b.0, b.1, wrap)
     };
     if n <= 32 {
         let wrap = [torus, torus];
         let mut best = f64::INFINITY;
-        for i in 0..n as u32 {
-            for j in i + 1..n as u32 {
+        for i in 0..n as u64 {
+            for j in i + 1..n as u64 {
                 best = best.min(dist(i, j, wrap));
             }
         }
         return best;
     }
 
-    // Quantise to 31 bits over the bounding square of the points.
+    // Quantise to 31 bits over the bounding square of the points (on the
+    // fly: the coordinates are not stored).
     let (mut lo_x, mut lo_y, mut hi_x, mut hi_y) = (1.0f64, 1.0f64, 0.0f64, 0.0f64);
     for p in points {
         let (x, y) = (coord(p.x), coord(p.y));
@@ -432,32 +437,39 @@ fn robust_closest_pair_squared(points: &[Vec2], torus: bool) -> f64 {
     } else {
         0.0
     };
-    let quantised: Vec<(u32, u32)> = points
-        .iter()
-        .map(|p| {
-            let q = |v: f64, lo: f64| (((v - lo) * scale) as u32).min(0x7fff_ffff);
-            (q(coord(p.x), lo_x), q(coord(p.y), lo_y))
-        })
-        .collect();
+    let morton_of = |i: u64, shift: u32| {
+        let p = points[i as usize];
+        let q = |v: f64, lo: f64| (((v - lo) * scale) as u32).min(0x7fff_ffff);
+        morton(q(coord(p.x), lo_x) + shift, q(coord(p.y), lo_y) + shift)
+    };
 
     // δ0² from pairs adjacent in the z-order of a shift. The first shift
     // usually gives a bound within a small factor (it does for lines,
     // lattices and clusters); if the grid pass then meets more than `16 n`
     // pairs, the other two shifts make the bound a guaranteed one.
+    //
+    // Each key is the Morton code's top bits over the point's index, so one
+    // u64 radix sort orders by (code prefix, index); runs that share a
+    // prefix are then sorted by their whole code, ties by index, which is
+    // the order of a stable sort by the code.
+    let index_bits = 64 - (n as u64 - 1).leading_zeros();
+    let index_mask = (1u64 << index_bits) - 1;
     let z_order_bound = |shifts: &[u32]| {
         let mut bound = f64::INFINITY;
-        let mut keys: Vec<(u64, u32)> = Vec::with_capacity(n);
+        let mut keys: Vec<u64> = Vec::with_capacity(n);
         for &shift in shifts {
             keys.clear();
-            keys.extend(
-                quantised
-                    .iter()
-                    .enumerate()
-                    .map(|(i, &(x, y))| (morton(x + shift, y + shift), i as u32)),
+            keys.extend((0..n as u64).map(|i| (morton_of(i, shift) & !index_mask) | i));
+            radix_sort(&mut keys, |&k| k, 64);
+            refine_runs(
+                &mut keys,
+                index_bits,
+                index_bits,
+                |i| morton_of(i, shift),
+                None,
             );
-            radix_sort(&mut keys, |k| k.0, 64);
             for w in keys.windows(2) {
-                bound = bound.min(dist(w[0].1, w[1].1, plane));
+                bound = bound.min(dist(w[0] & index_mask, w[1] & index_mask, plane));
             }
         }
         bound
@@ -479,115 +491,213 @@ fn robust_closest_pair_squared(points: &[Vec2], torus: bool) -> f64 {
     grid_pass(points, torus, bound, u64::MAX).unwrap_or(bound)
 }
 
+/// Sorts each run of `keys` (a key prefix over a `code_bits`-bit code)
+/// that shares its prefix by the `dropped` low bits of the code's `full`
+/// key, then by code: the order of a sort by (full key, code). Where those
+/// bits fit beside the code, each key of such a run becomes them over the
+/// code and the run is sorted as plain u64 (the code stays in the low
+/// bits); otherwise the run is sorted by keys computed on demand. A run of
+/// r keys costs O(r log r). With `cells`, pushes each key's full key there
+/// in the new order.
+fn refine_runs(
+    keys: &mut [u64],
+    code_bits: u32,
+    dropped: u32,
+    full: impl Fn(u64) -> u64,
+    mut cells: Option<&mut Vec<u64>>,
+) {
+    let code_mask = u64::MAX >> (64 - code_bits);
+    let low_mask = u64::MAX >> (64 - dropped);
+    let packs = dropped + code_bits <= 64;
+    let mut start = 0;
+    while start < keys.len() {
+        let head = keys[start] >> code_bits;
+        let mut end = start + 1;
+        while end < keys.len() && keys[end] >> code_bits == head {
+            end += 1;
+        }
+        let run = &mut keys[start..end];
+        if run.len() == 1 {
+            if let Some(cells) = cells.as_deref_mut() {
+                cells.push(full(run[0] & code_mask));
+            }
+        } else if packs {
+            for k in run.iter_mut() {
+                let code = *k & code_mask;
+                *k = ((full(code) & low_mask) << code_bits) | code;
+            }
+            run.sort_unstable();
+            if let Some(cells) = cells.as_deref_mut() {
+                cells.extend(run.iter().map(|&k| (head << dropped) | (k >> code_bits)));
+            }
+        } else {
+            run.sort_unstable_by_key(|&k| (full(k & code_mask), k & code_mask));
+            if let Some(cells) = cells.as_deref_mut() {
+                cells.extend(run.iter().map(|&k| full(k & code_mask)));
+            }
+        }
+        start = end;
+    }
+}
+
+/// Calls `f(code, x, y)` for the point `(x, y)` of index `i` and, on the
+/// torus, for each copy of it one period away across a seam it is within
+/// `side` of (right; right and down; up; right and up: ghost kinds 1 to 4
+/// in the low 3 bits of the code).
+#[inline(always)]
+fn for_entries(
+    i: u64,
+    (x, y): (f64, f64),
+    torus: bool,
+    side: f64,
+    mut f: impl FnMut(u64, f64, f64),
+) {
+    if !torus {
+        f(i, x, y);
+        return;
+    }
+    let code = i << 3;
+    f(code, x, y);
+    let (near_x0, near_y0, near_y1) = (x < side, y < side, y > 1.0 - side);
+    if near_x0 {
+        f(code | 1, x + 1.0, y);
+        if near_y1 {
+            f(code | 2, x + 1.0, y - 1.0);
+        }
+    }
+    if near_y0 {
+        f(code | 3, x, y + 1.0);
+        if near_x0 {
+            f(code | 4, x + 1.0, y + 1.0);
+        }
+    }
+}
+
 /// The closest pair given an upper bound `bound` on its squared distance,
 /// or `None` once more than `budget` pairs have been compared.
+///
+/// Each entry (a point, or on the torus a ghost copy) is one u64: its cell
+/// key's top bits over its entry code (the point's index, and on the torus
+/// 3 bits of ghost kind). After a radix sort, and a sort of the runs that
+/// share a key prefix when the cell key does not fit whole, the runs of
+/// equal cell keys are the occupied cells in key order; the pass walks them
+/// reading coordinates from `points`. 16 bytes an entry: the keys, with the
+/// radix sort's scratch while it sorts and then the whole cell keys.
 fn grid_pass(points: &[Vec2], torus: bool, bound: f64, budget: u64) -> Option<f64> {
     let n = points.len();
-    let at = |i: u32| {
+    let at = |i: u64| {
         let p = points[i as usize];
         (coord(p.x), coord(p.y))
     };
     let side = libm::sqrt(bound) * MARGIN;
-    // The points, and on the torus their ghosts near the seams, as
-    // (position, original index).
-    let mut entries: Vec<(f64, f64, u32)> = Vec::with_capacity(n);
-    for i in 0..n as u32 {
-        let (x, y) = at(i);
-        entries.push((x, y, i));
-        if torus {
-            let (near_x0, near_y0, near_y1) = (x < side, y < side, y > 1.0 - side);
-            if near_x0 {
-                entries.push((x + 1.0, y, i));
-                if near_y1 {
-                    entries.push((x + 1.0, y - 1.0, i));
-                }
-            }
-            if near_y0 {
-                entries.push((x, y + 1.0, i));
-                if near_x0 {
-                    entries.push((x + 1.0, y + 1.0, i));
-                }
-            }
-        }
-    }
+    let ghost_bits = if torus { 3 } else { 0 };
     let (mut ox, mut oy, mut ex, mut ey) = (f64::MAX, f64::MAX, f64::MIN, f64::MIN);
-    for &(x, y, _) in &entries {
-        (ox, ex) = (ox.min(x), ex.max(x));
-        (oy, ey) = (oy.min(y), ey.max(y));
+    let mut entries = 0usize;
+    for i in 0..n as u64 {
+        for_entries(i, at(i), torus, side, |_, x, y| {
+            (ox, ex) = (ox.min(x), ex.max(x));
+            (oy, ey) = (oy.min(y), ey.max(y));
+            entries += 1;
+        });
     }
     // Cells of side at least δ0, at most 2^30 per axis; keys cy gx + cx.
-    let side = side.max((ex - ox).max(ey - oy) / f64::from(1u32 << 30));
-    let cell = |v: f64, o: f64| ((v - o) / side) as u64;
+    let side_cell = side.max((ex - ox).max(ey - oy) / f64::from(1u32 << 30));
+    let cell = |v: f64, o: f64| ((v - o) / side_cell) as u64;
     let gx = cell(ex, ox) + 2;
     let key_bits = 64 - (gx * (cell(ey, oy) + 2)).leading_zeros();
-    let mut cells: Vec<(u64, u32)> = entries
-        .iter()
-        .enumerate()
-        .map(|(e, &(x, y, _))| (cell(y, oy) * gx + cell(x, ox), e as u32))
-        .collect();
-    radix_sort(&mut cells, |c| c.0, key_bits);
-    // The original coordinates and index of each entry, in cell order, so
-    // that the pass reads memory in order.
-    let sorted: Vec<(f64, f64, u32)> = cells
-        .iter()
-        .map(|&(_, e)| {
-            let i = entries[e as usize].2;
-            let (x, y) = at(i);
-            (x, y, i)
-        })
-        .collect();
-    drop(entries);
+    let cell_key = |x: f64, y: f64| cell(y, oy) * gx + cell(x, ox);
+    let cell_of = |code: u64| {
+        let (x, y) = at(code >> ghost_bits);
+        let mut key = 0;
+        for_entries(code >> ghost_bits, (x, y), torus, side, |c, x, y| {
+            if c == code {
+                key = cell_key(x, y);
+            }
+        });
+        key
+    };
+    let max_code = ((n as u64 - 1) << ghost_bits) | if torus { 7 } else { 1 };
+    let code_bits = 64 - max_code.leading_zeros();
+    let code_mask = (1u64 << code_bits) - 1;
+    // Low cell-key bits dropped to fit the code (0 when the key fits whole).
+    let dropped = (key_bits + code_bits).saturating_sub(64);
+    let mut keys: Vec<u64> = Vec::with_capacity(entries);
+    for i in 0..n as u64 {
+        for_entries(i, at(i), torus, side, |code, x, y| {
+            keys.push(((cell_key(x, y) >> dropped) << code_bits) | code);
+        });
+    }
+    radix_sort(&mut keys, |&k| k, (key_bits - dropped + code_bits).min(64));
+    // The whole cell key of each entry in cell order (the radix scratch is
+    // gone, so this keeps the peak at 16 bytes an entry).
+    let mut cells: Vec<u64> = Vec::with_capacity(keys.len());
+    if dropped == 0 {
+        cells.extend(keys.iter().map(|&k| k >> code_bits));
+    } else {
+        refine_runs(&mut keys, code_bits, dropped, cell_of, Some(&mut cells));
+    }
+    let key_at = |p: usize| cells[p];
+    // The end of the cell starting at `s` with key `key`, and the next
+    // cell's key.
+    let run_end = |s: usize, key: u64| {
+        let mut e = s + 1;
+        while e < keys.len() {
+            let k = key_at(e);
+            if k != key {
+                return (e, k);
+            }
+            e += 1;
+        }
+        (e, u64::MAX)
+    };
 
     let wrap = [torus, torus];
     let mut best = bound;
     let mut compared = 0u64;
-    let compare =
-        |a: &[(f64, f64, u32)], b: &[(f64, f64, u32)], best: &mut f64, compared: &mut u64| {
-            *compared += (a.len() * b.len()) as u64;
-            for &(ax, ay, i) in a {
-                for &(bx, by, j) in b {
-                    if i != j {
-                        *best = best.min(dist2(ax, ay, bx, by, wrap));
-                    }
+    let compare = |a: &[u64], b: &[u64], best: &mut f64, compared: &mut u64| {
+        *compared += (a.len() * b.len()) as u64;
+        for &ca in a {
+            let i = (ca & code_mask) >> ghost_bits;
+            let (ax, ay) = at(i);
+            for &cb in b {
+                let j = (cb & code_mask) >> ghost_bits;
+                if i != j {
+                    let (bx, by) = at(j);
+                    *best = best.min(dist2(ax, ay, bx, by, wrap));
                 }
             }
-        };
-    // Runs of equal keys are cells; `above` walks the cells of the next row.
-    let mut runs: Vec<(u64, usize, usize)> = Vec::new();
-    let mut start = 0;
-    for k in 1..=cells.len() {
-        if k == cells.len() || cells[k].0 != cells[start].0 {
-            runs.push((cells[start].0, start, k));
-            start = k;
         }
-    }
-    let mut above = 0usize;
-    for (r, &(key, s, e)) in runs.iter().enumerate() {
-        let own = &sorted[s..e];
+    };
+    // `above` walks the cells of the next row, one cell start at a time.
+    let (mut s, mut key) = (0, key_at(0));
+    let (mut above, mut above_key) = (0, key);
+    while s < keys.len() {
+        let (e, next) = run_end(s, key);
+        let own = &keys[s..e];
         for k in 0..own.len() {
             compare(&own[k..k + 1], &own[k + 1..], &mut best, &mut compared);
         }
         // Cell (cx + 1, cy); cx + 1 < gx, so the key stays in its row.
-        if let Some(&(next, s2, e2)) = runs.get(r + 1)
-            && next == key + 1
-        {
-            compare(own, &sorted[s2..e2], &mut best, &mut compared);
+        if e < keys.len() && next == key + 1 {
+            let (e2, _) = run_end(e, next);
+            compare(own, &keys[e..e2], &mut best, &mut compared);
         }
         // Cells (cx - 1 ..= cx + 1, cy + 1); cx + 1 < gx and cx >= 1 there.
         let first = key + gx - u64::from(key % gx != 0);
         let last = key + gx + 1;
-        while above < runs.len() && runs[above].0 < first {
-            above += 1;
+        while above < keys.len() && above_key < first {
+            (above, above_key) = run_end(above, above_key);
         }
-        let mut a = above;
-        while a < runs.len() && runs[a].0 <= last {
-            let (_, s2, e2) = runs[a];
-            compare(own, &sorted[s2..e2], &mut best, &mut compared);
-            a += 1;
+        let (mut a, mut a_key) = (above, above_key);
+        while a < keys.len() && a_key <= last {
+            let (a_end, a_next) = run_end(a, a_key);
+            compare(own, &keys[a..a_end], &mut best, &mut compared);
+            (a, a_key) = (a_end, a_next);
         }
         if compared > budget {
             return None;
         }
+        (s, key) = (e, next);
     }
     Some(best)
 }
@@ -681,6 +791,52 @@ mod tests {
                 grid_pass(&points, torus, 2.0, u64::MAX),
                 Some(brute(&points, torus))
             );
+        }
+    }
+
+    /// Cells of 2^-30 of the extent: the cell keys do not fit beside the
+    /// entry codes in one u64, so runs sharing a key prefix are sorted by
+    /// their whole key (a row of tiny cells, a cluster at a seam, and one
+    /// far point).
+    #[test]
+    fn grid_pass_with_cell_keys_wider_than_the_word() {
+        let mut points: Vec<Vec2> = (0..40u16)
+            .map(|k| Vec2::new(f32::from(k) * 1e-9 + 1e-6, f32::from(k % 3) * 5e-10))
+            .collect();
+        points.extend((0..30u16).map(|k| Vec2::new(1.0 - f32::from(k + 1) * 2e-6, 0.5)));
+        points.push(Vec2::new(0.9, 0.9));
+        for torus in [false, true] {
+            let exact = brute(&points, torus);
+            assert!(exact > 0.0 && exact < 1e-16, "{exact}");
+            for factor in [1.0, 4.0, 1e6] {
+                assert_eq!(
+                    grid_pass(&points, torus, exact * factor, u64::MAX),
+                    Some(exact),
+                    "torus {torus}, bound {factor} x"
+                );
+            }
+            assert_eq!(robust_closest_pair_squared(&points, torus), exact);
+        }
+    }
+
+    /// Both ways of sorting the runs: the dropped bits packed beside the
+    /// code, and (when they do not fit) keys computed on demand.
+    #[test]
+    fn refined_runs_follow_the_whole_key() {
+        // Seven prefixes over hashed low bits, codes 0..300.
+        for (code_bits, dropped) in [(9, 7), (9, 55), (40, 30)] {
+            let full = |c: u64| {
+                ((c % 7) << dropped) | (c.wrapping_mul(0x9e37_79b9_7f4a_7c15) >> (64 - dropped))
+            };
+            let mut keys: Vec<u64> = (0..300u64)
+                .map(|c| ((full(c) >> dropped) << code_bits) | c)
+                .collect();
+            keys.sort_unstable();
+            refine_runs(&mut keys, code_bits, dropped, full, None);
+            let codes: Vec<u64> = keys.iter().map(|k| k & ((1 << code_bits) - 1)).collect();
+            let mut expected: Vec<u64> = (0..300).collect();
+            expected.sort_by_key(|&c| (full(c), c));
+            assert_eq!(codes, expected, "code bits {code_bits}, dropped {dropped}");
         }
     }
 
