@@ -87,8 +87,8 @@ pub fn star_discrepancy(points: &[Vec2]) -> Result<f64, Error> {
     // Too few points (open boxes): for each top edge b_j in ys and 1, the line
     // n a b_j - #{x < a, y < b_j}. A point with y rank r lowers slots r+1..=m.
     let mut best_open = f64::NEG_INFINITY;
-    {
-        let mut tree = Kinetic::<true>::new(&ys, nf);
+    let buffers = {
+        let mut tree = Kinetic::<true>::new(&ys, nf, Buffers::default());
         let mut k = 0;
         while k < n {
             let a = x_at(k);
@@ -101,14 +101,18 @@ pub fn star_discrepancy(points: &[Vec2]) -> Result<f64, Error> {
         }
         tree.advance(1.0);
         best_open = best_open.max(tree.max_at(1.0));
-    }
+        tree.into_buffers()
+    };
 
     // Too many points (closed boxes): for each top edge b_j in ys, the line
     // #{x <= a, y <= b_j} - n a b_j. Slots are stored in decreasing b (so the
     // slopes -n b increase); a point with y rank r raises b_r.. = slots 0..m-r.
     let mut best_closed = f64::NEG_INFINITY;
     {
-        let mut tree = Kinetic::<false>::new(&ys, -nf);
+        // The open sweep's buffers, reset: freeing them and allocating the
+        // same sizes again would leave a freed copy resident under glibc's
+        // dynamic mmap threshold.
+        let mut tree = Kinetic::<false>::new(&ys, -nf, buffers);
         let mut k = 0;
         while k < n {
             let a = x_at(k);
@@ -186,6 +190,15 @@ const BUCKET: usize = 32;
 /// DFS order: the node for buckets `[lo, hi)` at `v` has its left child at
 /// `v + 1` and its right child at `v + 2 (mid - lo)`, so the tree uses exactly
 /// `2 buckets - 1` nodes.
+/// The storage of a [`Kinetic`] tree, handed from one sweep to the next.
+#[derive(Debug, Default)]
+struct Buffers {
+    count: Vec<u32>,
+    hull: Vec<u32>,
+    ptr: Vec<u8>,
+    nodes: Vec<Node>,
+}
+
 #[derive(Debug)]
 struct Kinetic<'a, const OPEN: bool> {
     ys: &'a [f32],
@@ -204,8 +217,9 @@ impl<'a, const OPEN: bool> Kinetic<'a, OPEN> {
     /// The unit shift of an update.
     const DELTA: f64 = if OPEN { -1.0 } else { 1.0 };
 
-    /// The sweep's lines over `ys` (sorted, distinct), with zero intercepts, at time 0.
-    fn new(ys: &'a [f32], scale: f64) -> Self {
+    /// The sweep's lines over `ys` (sorted, distinct), with zero intercepts,
+    /// at time 0, in `buffers` (whatever they held; their capacity is reused).
+    fn new(ys: &'a [f32], scale: f64, buffers: Buffers) -> Self {
         let len = ys.len() + usize::from(OPEN);
         let buckets = len.div_ceil(BUCKET);
         let leaf = Node {
@@ -214,17 +228,42 @@ impl<'a, const OPEN: bool> Kinetic<'a, OPEN> {
             lazy: 0.0,
             slope: 0.0,
         };
+        let Buffers {
+            mut count,
+            mut hull,
+            mut ptr,
+            mut nodes,
+        } = buffers;
+        /// `len` copies of `value`, in `v`'s allocation.
+        fn reset<T: Clone>(v: &mut Vec<T>, len: usize, value: T) {
+            v.clear();
+            v.resize(len, value);
+        }
+        reset(&mut count, len, 0);
+        reset(&mut hull, buckets, 0);
+        reset(&mut ptr, buckets, 0);
+        reset(&mut nodes, 2 * buckets - 1, leaf);
         let mut tree = Self {
             ys,
             scale,
-            count: vec![0; len],
-            hull: vec![0; buckets],
-            ptr: vec![0; buckets],
-            nodes: vec![leaf; 2 * buckets - 1],
+            count,
+            hull,
+            ptr,
+            nodes,
         };
         debug_assert!((1..len).all(|j| tree.slope(j - 1) < tree.slope(j)));
         tree.build(0, 0, buckets);
         tree
+    }
+
+    /// The tree's storage, for the next sweep.
+    fn into_buffers(self) -> Buffers {
+        Buffers {
+            count: self.count,
+            hull: self.hull,
+            ptr: self.ptr,
+            nodes: self.nodes,
+        }
     }
 
     /// Slope of line `j`.
@@ -470,7 +509,7 @@ mod tests {
         let ys: Vec<f32> = (0..5 * BUCKET + 2)
             .map(|j| (j as f32 * 0.37 + 0.1) / 64.0)
             .collect();
-        let mut tree = Kinetic::<OPEN>::new(&ys, scale);
+        let mut tree = Kinetic::<OPEN>::new(&ys, scale, Buffers::default());
         let len = ys.len() + usize::from(OPEN);
         let slope = |j: usize| match (OPEN, ys.get(j)) {
             (true, Some(&b)) => scale * f64::from(b),
