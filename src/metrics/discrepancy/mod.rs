@@ -21,24 +21,25 @@ use super::{radix_sort, sort_keys_in_place};
 /// back), by a radix sort of the f32 bits, which order like the values for
 /// the non-negative floats validation lets through.
 pub(super) fn sorted_keys(points: &[Vec2], coordinate: impl Fn(&Vec2) -> f32) -> Vec<u64> {
-    let mut keys: Vec<u64> = points
+    let mut keys = unsorted_keys(points, coordinate);
+    radix_sort(&mut keys, |&k| k >> 32, 31);
+    keys
+}
+
+/// The keys `bits << 32 | index` of `points`, in index order.
+fn unsorted_keys(points: &[Vec2], coordinate: impl Fn(&Vec2) -> f32) -> Vec<u64> {
+    points
         .iter()
         .enumerate()
         .map(|(i, p)| (u64::from(coordinate(p).to_bits() & 0x7fff_ffff) << 32) | i as u64)
-        .collect();
-    radix_sort(&mut keys, |&k| k >> 32, 31);
-    keys
+        .collect()
 }
 
 /// The keys of [`sorted_keys`] in the same order, sorted in place by
 /// [`sort_keys_in_place`] (no scratch copy, so 8 bytes a point at the peak
 /// instead of 16).
 pub(super) fn keys_in_place(points: &[Vec2], coordinate: impl Fn(&Vec2) -> f32) -> Vec<u64> {
-    let mut keys: Vec<u64> = points
-        .iter()
-        .enumerate()
-        .map(|(i, p)| (u64::from(coordinate(p).to_bits() & 0x7fff_ffff) << 32) | i as u64)
-        .collect();
+    let mut keys = unsorted_keys(points, coordinate);
     sort_keys_in_place(&mut keys);
     keys
 }
