@@ -404,7 +404,7 @@ mod coherent {
     use wellspread::primitives::{hash_u32, owen_scramble, owen_scramble_reversed};
     use wellspread::{Padded, PixelSampler, Sobol};
 
-    use super::pascal_reversed;
+    use super::{Rng, pascal_reversed};
 
     const SIZE: usize = 128;
     const SPP: usize = 16;
@@ -530,17 +530,6 @@ mod coherent {
         (worst, ratio)
     }
 
-    struct Rng(u64);
-    impl Rng {
-        fn next(&mut self) -> u32 {
-            self.0 = self
-                .0
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1_442_695_040_888_963_407);
-            (self.0 >> 33) as u32
-        }
-    }
-
     pub fn search() -> [[u32; 2]; 32] {
         // The integral of exp(-t^2) over [-1/2, 1/2] is sqrt(pi) erf(1/2).
         let erf_half = 0.520_499_877_813_046_5;
@@ -559,10 +548,12 @@ mod coherent {
             },
             &exact,
         );
+        // `next() >> 9`: the top 23 bits of the state, the digits this stage
+        // has always drawn.
         let mut rng = Rng(0x5eed);
         let mut g = [[0u32; 2]; 32];
         for v in g.iter_mut() {
-            *v = [rng.next() >> 8, rng.next() >> 8];
+            *v = [rng.next() >> 9, rng.next() >> 9];
         }
         let restarts = 2;
         let mut best = (f64::MAX, [[0.0; SPP]; 2]);
@@ -570,7 +561,7 @@ mod coherent {
         for _ in 0..restarts {
             let mut cand = g;
             for v in cand.iter_mut().take(SEARCHED) {
-                *v = [rng.next() >> 8, rng.next() >> 8];
+                *v = [rng.next() >> 9, rng.next() >> 9];
             }
             let s = score(
                 &blurred(&|f, x, y, i| linear(&cand, f, x, y, i), &exact),

@@ -114,26 +114,20 @@ fn wraparound_sweep(points: &[Vec2]) -> f64 {
             .map(|&k| axis(&points[k as u32 as usize]))
             .collect()
     };
-    let y_by_x = gather(&keys_x, |p| p.y);
-    let (abs_dx, abs_dx_dy2) = absolute_sweep(
-        n,
-        keys_x
-            .iter()
-            .zip(&y_by_x)
-            .map(|(&k, &y)| (coord(key_value(k)), coord(y))),
-    );
-    drop(y_by_x);
+    // The sweep along the keys' coordinate, the other one gathered.
+    let sweep_along = |keys: &[u64], other: fn(&Vec2) -> f32| {
+        let other_by_key = gather(keys, other);
+        absolute_sweep(
+            n,
+            keys.iter()
+                .zip(&other_by_key)
+                .map(|(&k, &o)| (coord(key_value(k)), coord(o))),
+        )
+    };
+    let (abs_dx, abs_dx_dy2) = sweep_along(&keys_x, |p| p.y);
     let mut order = pack_low_halves(keys_x);
     let mut by_rank = keys_in_place(points, |p| p.y);
-    let x_by_y = gather(&by_rank, |p| p.x);
-    let (abs_dy, dx2_abs_dy) = absolute_sweep(
-        n,
-        by_rank
-            .iter()
-            .zip(&x_by_y)
-            .map(|(&k, &x)| (coord(key_value(k)), coord(x))),
-    );
-    drop(x_by_y);
+    let (abs_dy, dx2_abs_dy) = sweep_along(&by_rank, |p| p.x);
     let fixed = fits_fixed(points);
     let mut rank = vec![0u32; n];
     for (r, key) in by_rank.iter_mut().enumerate() {
