@@ -129,8 +129,9 @@ pub fn is_stratified(points: &[Vec2], columns: u32, rows: u32) -> Result<bool, E
 /// area `1/n`, for all `m + 1` shapes `k = 0..=m`, holds exactly one point.
 ///
 /// O(n log n) time (one pass per shape over exact integer cell indices), O(n)
-/// memory (12 bytes a point: the cells as two u32 and a u32 stamp). f32 values just below 1 are `2^-24` apart, so no f32 set of more
-/// than 2^24 points is a net (its narrowest columns near 1 are empty).
+/// memory (12 bytes a point: the cells as two u32 and a u32 stamp). f32
+/// values just below 1 are `2^-24` apart, so no f32 set of more than 2^24
+/// points is a net (its narrowest columns near 1 are empty).
 ///
 /// # Errors
 ///
@@ -241,22 +242,22 @@ pub fn net_t_value(points: &[Vec2]) -> Result<u32, Error> {
     })
 }
 
-/// [`net_t_value`] of the `n` points of `cells` (see [`with_cells`]).
+/// [`net_t_value`] of the `n` points of `cells` (see [`packed_cells`]).
 fn net_t_value_of<I: Iterator<Item = (u64, u64)>>(n: usize, cells: impl Fn() -> I, m: u32) -> u32 {
     let mut counts = vec![0u32; n];
-    let is_net_with_t = |t: u32, counts: &mut [u32]| is_net_with_t(&cells, m, t, counts);
+    let check = |t: u32, counts: &mut [u32]| is_net_with_t(&cells, m, t, counts);
     // Galloping search from t = 0 (the answer for good sets, which then costs
     // one check), then a binary search. A failing check usually stops early.
     // Invariant: the set is a (hi, m, 2)-net and not a (lo - 1, m, 2)-net.
     let (mut lo, mut hi) = (0, m);
     let mut step = 1;
     while lo < hi {
-        if is_net_with_t(lo, &mut counts) {
+        if check(lo, &mut counts) {
             hi = lo;
             break;
         }
         let next = (lo + step).min(hi);
-        if is_net_with_t(next, &mut counts) {
+        if check(next, &mut counts) {
             (lo, hi) = (lo + 1, next);
             break;
         }
@@ -265,7 +266,7 @@ fn net_t_value_of<I: Iterator<Item = (u64, u64)>>(n: usize, cells: impl Fn() -> 
     }
     while lo < hi {
         let t = lo + (hi - lo) / 2;
-        if is_net_with_t(t, &mut counts) {
+        if check(t, &mut counts) {
             hi = t;
         } else {
             lo = t + 1;
