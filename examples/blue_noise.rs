@@ -15,7 +15,8 @@
 //! as ratios to `Padded<Sobol>` on the same prefixes. Two integrands: the
 //! same Gaussian bump in every pixel (`gauss`), and a smooth image whose
 //! footprint differs from pixel to pixel (`footprint`); each on dimension
-//! pair 0, pair 2, and a 1D draw (the first coordinate of pair 1).
+//! pair 0, pair 2, a 1D draw (the first coordinate of pair 1), and the lens
+//! half of a domain's first 4D draw (film and lens drawn together).
 
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -63,6 +64,9 @@ enum Draw {
     Pair(u32),
     /// The first coordinate of pair 1.
     OneD,
+    /// The lens half (last two coordinates) of a domain's first 4D draw
+    /// (`start(pixel, i).next_4d()`), film and lens stratified together.
+    Lens,
 }
 
 impl Draw {
@@ -70,6 +74,7 @@ impl Draw {
         match self {
             Draw::Pair(d) => format!("pair {d}"),
             Draw::OneD => "1D".into(),
+            Draw::Lens => "4D lens".into(),
         }
     }
 }
@@ -87,9 +92,11 @@ impl Integrand {
         let (u, v) = (f64::from(p.x), f64::from(p.y));
         let (x, y) = (f64::from(x), f64::from(y));
         match (self, draw) {
-            (Integrand::Gauss, Draw::Pair(_)) => (-((u - 0.5).powi(2) + (v - 0.5).powi(2))).exp(),
+            (Integrand::Gauss, Draw::Pair(_) | Draw::Lens) => {
+                (-((u - 0.5).powi(2) + (v - 0.5).powi(2))).exp()
+            }
             (Integrand::Gauss, Draw::OneD) => (-(u - 0.5).powi(2)).exp(),
-            (Integrand::Footprint, Draw::Pair(_)) => {
+            (Integrand::Footprint, Draw::Pair(_) | Draw::Lens) => {
                 0.5 + 0.5 * (0.9 * (x + u)).sin() * (0.7 * (y + v)).sin()
             }
             (Integrand::Footprint, Draw::OneD) => 0.5 + 0.5 * (0.9 * (x + u) + 0.7 * y).sin(),
@@ -102,9 +109,9 @@ impl Integrand {
         // The integral of exp(-t^2) over [-1/2, 1/2].
         let g1 = core::f64::consts::PI.sqrt() * erf(0.5);
         match (self, draw) {
-            (Integrand::Gauss, Draw::Pair(_)) => g1 * g1,
+            (Integrand::Gauss, Draw::Pair(_) | Draw::Lens) => g1 * g1,
             (Integrand::Gauss, Draw::OneD) => g1,
-            (Integrand::Footprint, Draw::Pair(_)) => {
+            (Integrand::Footprint, Draw::Pair(_) | Draw::Lens) => {
                 let ix = ((0.9 * x).cos() - (0.9 * (x + 1.0)).cos()) / 0.9;
                 let iy = ((0.7 * y).cos() - (0.7 * (y + 1.0)).cos()) / 0.7;
                 0.5 + 0.5 * ix * iy
@@ -173,6 +180,11 @@ fn error_images(
                 let p = match draw {
                     Draw::Pair(d) => sampler.sample_pixel([x, y], i, d),
                     Draw::OneD => Vec2::splat(sampler.sample_pixel([x, y], i, 1).x),
+                    Draw::Lens => match which {
+                        Which::Padded => lens(padded, [x, y], i),
+                        Which::ZSobol => lens(zsobol, [x, y], i),
+                        Which::BlueNoise => lens(blue, [x, y], i),
+                    },
                 };
                 sum += integrand.value(draw, [x, y], p);
                 images[i as usize][(y * size + x) as usize] = sum / f64::from(i + 1) - exact;
@@ -180,6 +192,12 @@ fn error_images(
         }
     }
     images
+}
+
+/// The lens half of the first 4D draw of sample `index` of `pixel`.
+fn lens<S: PixelSampler + Copy>(sampler: S, pixel: [u32; 2], index: u32) -> Vec2 {
+    let v = sampler.start(pixel, index).next_4d();
+    Vec2::new(v.z, v.w)
 }
 
 /// A Gaussian blur of `sigma = 2` pixels, wrapping around the edges.
@@ -339,7 +357,7 @@ fn run(args: &Args) -> Result<String, String> {
         p = args.frames - 1
     );
     let mut worst = [0.0f64; 3];
-    for draw in [Draw::Pair(0), Draw::Pair(2), Draw::OneD] {
+    for draw in [Draw::Pair(0), Draw::Pair(2), Draw::OneD, Draw::Lens] {
         for integrand in [Integrand::Gauss, Integrand::Footprint] {
             let base = measure(Which::Padded, args, integrand, draw);
             for which in [Which::BlueNoise, Which::ZSobol] {

@@ -3,11 +3,13 @@
 //! pixel columns were searched so that neighbouring pixels complement each
 //! other at every prefix, Owen-scrambled per frame and dimension pair.
 
-use glam::Vec2;
+use glam::{Vec2, Vec3, Vec4};
 
 use crate::primitives::{hash_combine, hash_u32, owen_scramble, owen_scramble_reversed};
 // Sobol dimension 1 in reversed bit order (the Pascal matrix mod 2).
+use crate::pixel::Draw;
 use crate::samplers::sequence::sobol::pascal_reversed;
+use crate::samplers::sequence::sobol_4d::dimensions_2_3_reversed;
 use crate::{Error, PixelSampler};
 
 /// Salts that split a dimension pair's seed into the index shuffle's and
@@ -152,8 +154,11 @@ const PIXEL_TABLE: [[[u32; 2]; 256]; 4] = {
 /// - Blue-noise error across pixels at every prefix on integrands that are
 ///   smooth inside a pixel: `docs/blue_noise.md` measures the blurred RMSE
 ///   at 0.30 to 0.53 times `Padded<Sobol>`'s on a per-pixel Gaussian and
-///   0.64 to 0.75 times on an image footprint (n = 1 to 16, pairs 0 and 2
-///   and 1D draws).
+///   0.64 to 0.87 times on an image footprint (n = 1 to 16, pairs 0 and 2,
+///   1D draws and the lens half of the 4D draw).
+/// - A domain's `next_4d` is one point of a 4D Owen-scrambled Sobol set per
+///   pixel, each half shifted as a pair is: every power-of-two prefix is a
+///   (3,m,4)-net, film and lens stratified together as in `Padded<Sobol>`.
 /// - Dimension pairs and frames use unrelated translations, shuffles and
 ///   scrambles, so they are decorrelated: two pairs of one pixel look
 ///   independent across the film (chi-square of their first coordinates
@@ -323,6 +328,52 @@ fn unit(t: u32) -> f32 {
     t as f32 * (1.0 / (1u32 << DIGITS) as f32)
 }
 
+impl BlueNoise {
+    /// The seed of dimension pair `dimension` in this frame, and the seed
+    /// of its `65536 x 65536` tile at `pixel`.
+    #[inline(always)]
+    fn seeds(&self, [x, y]: [u32; 2], dimension: u32) -> (u32, u32) {
+        let pair = hash_combine(hash_u32(self.frame), dimension);
+        (
+            pair,
+            hash_combine(pair, hash_combine(x >> TILE_BITS, y >> TILE_BITS)),
+        )
+    }
+}
+
+/// A point of a digital net (its two coordinates `u` and `v` as 0.32 fixed
+/// point, natural order) shifted by the pixel columns of `pixel`'s code and
+/// Owen-scrambled, both seeded by `tile`.
+#[inline(always)]
+fn shifted_point(tile: u32, [x, y]: [u32; 2], u: u32, v: u32) -> Vec2 {
+    // The pixel's Morton code shuffled as Burley shuffles an index:
+    // aligned blocks of codes (aligned squares of pixels) map onto
+    // aligned blocks, so each square's shifts stay one coset of its
+    // columns, while which pixel gets which shift changes with every
+    // frame, pair and tile (so two pairs of one pixel are unrelated).
+    // Before that, the pixel grid is translated by a hashed offset (per
+    // frame, pair and tile, modulo the tile), so the aligned squares of
+    // two pairs do not line up: their shifts at one pixel share no
+    // block structure.
+    let t = hash_u32(tile ^ SALT_TRANSLATE);
+    let code = owen_scramble(
+        morton(x.wrapping_add(t), y.wrapping_add(t >> 16)),
+        hash_u32(tile ^ SALT_PIXEL),
+    );
+    let [gx, gy] = BlueNoise::pixel_shift(code);
+    // Natural-order 24-digit coordinates of the shifted point.
+    let qx = (u >> (32 - DIGITS)) ^ gx;
+    let qy = (v >> (32 - DIGITS)) ^ gy;
+    // The scramble works in reversed order on 32 bits: the 24 digits
+    // sit in bits 0..24, and the 8 below the f32 resolution are dropped.
+    let scramble = |q: u32, salt: u32| {
+        owen_scramble_reversed((q << (32 - DIGITS)).reverse_bits(), hash_u32(tile ^ salt))
+            .reverse_bits()
+            >> (32 - DIGITS)
+    };
+    Vec2::new(unit(scramble(qx, SALT_X)), unit(scramble(qy, SALT_Y)))
+}
+
 impl PixelSampler for BlueNoise {
     /// The count it was built with, or `None` for
     /// [`unbounded`](BlueNoise::unbounded).
@@ -334,36 +385,44 @@ impl PixelSampler for BlueNoise {
     /// Sample `index` of `pixel` in dimension pair `dimension`; any index
     /// and any pixel (see the type's Limits).
     #[inline]
-    fn sample_pixel(&self, [x, y]: [u32; 2], index: u32, dimension: u32) -> Vec2 {
-        let pair = hash_combine(hash_u32(self.frame), dimension);
-        let tile = hash_combine(pair, hash_combine(x >> TILE_BITS, y >> TILE_BITS));
+    fn sample_pixel(&self, pixel: [u32; 2], index: u32, dimension: u32) -> Vec2 {
+        let (pair, tile) = self.seeds(pixel, dimension);
         let s = owen_scramble(index, hash_u32(pair ^ SALT_INDEX));
-        // The pixel's Morton code shuffled as Burley shuffles an index:
-        // aligned blocks of codes (aligned squares of pixels) map onto
-        // aligned blocks, so each square's shifts stay one coset of its
-        // columns, while which pixel gets which shift changes with every
-        // frame, pair and tile (so two pairs of one pixel are unrelated).
-        // Before that, the pixel grid is translated by a hashed offset (per
-        // frame, pair and tile, modulo the tile), so the aligned squares of
-        // two pairs do not line up: their shifts at one pixel share no
-        // block structure.
-        let t = hash_u32(tile ^ SALT_TRANSLATE);
-        let code = owen_scramble(
-            morton(x.wrapping_add(t), y.wrapping_add(t >> 16)),
-            hash_u32(tile ^ SALT_PIXEL),
+        shifted_point(
+            tile,
+            pixel,
+            s.reverse_bits(),
+            pascal_reversed(s).reverse_bits(),
+        )
+    }
+
+    /// Dimensions 0 to 2 of [`draw_4d`](Self::draw_4d)'s point.
+    #[inline]
+    fn draw_3d(&self, draw: Draw) -> Vec3 {
+        self.draw_4d(draw).truncate()
+    }
+
+    /// One point of a 4D Owen-scrambled Sobol set per pixel, as
+    /// `Padded<Sobol>` draws it (a (3,m,4)-net at every power-of-two
+    /// prefix, film and lens stratified together), with each pair shifted
+    /// as [`sample_pixel`](Self::sample_pixel) shifts it: the first two
+    /// coordinates are `draw_2d(draw)`, the last two are Sobol dimensions
+    /// 2 and 3 of the same shuffled index under the pixel shift and
+    /// scrambles of `draw.second()`'s stream.
+    #[inline]
+    fn draw_4d(&self, draw: Draw) -> Vec4 {
+        let (pair, tile) = self.seeds(draw.pixel, draw.stream);
+        let s = owen_scramble(draw.index, hash_u32(pair ^ SALT_INDEX));
+        let film = shifted_point(
+            tile,
+            draw.pixel,
+            s.reverse_bits(),
+            pascal_reversed(s).reverse_bits(),
         );
-        let [gx, gy] = Self::pixel_shift(code);
-        // Natural-order 24-digit coordinates of the shifted Sobol point.
-        let qx = (s.reverse_bits() >> (32 - DIGITS)) ^ gx;
-        let qy = (pascal_reversed(s).reverse_bits() >> (32 - DIGITS)) ^ gy;
-        // The scramble works in reversed order on 32 bits: the 24 digits
-        // sit in bits 0..24, and the 8 below the f32 resolution are dropped.
-        let scramble = |q: u32, salt: u32| {
-            owen_scramble_reversed((q << (32 - DIGITS)).reverse_bits(), hash_u32(tile ^ salt))
-                .reverse_bits()
-                >> (32 - DIGITS)
-        };
-        Vec2::new(unit(scramble(qx, SALT_X)), unit(scramble(qy, SALT_Y)))
+        let (_, lens_tile) = self.seeds(draw.pixel, draw.second().stream);
+        let (c2, c3) = dimensions_2_3_reversed(s);
+        let lens = shifted_point(lens_tile, draw.pixel, c2.reverse_bits(), c3.reverse_bits());
+        Vec4::new(film.x, film.y, lens.x, lens.y)
     }
 
     /// A progressive sequence: an index past the count continues it, so
