@@ -339,6 +339,21 @@ impl BlueNoise {
             hash_combine(pair, hash_combine(x >> TILE_BITS, y >> TILE_BITS)),
         )
     }
+
+    /// Sample `index` of `pixel` in dimension pair `dimension`, and the
+    /// shuffled sequence index it is the point of.
+    #[inline(always)]
+    fn point_and_index(&self, pixel: [u32; 2], index: u32, dimension: u32) -> (Vec2, u32) {
+        let (pair, tile) = self.seeds(pixel, dimension);
+        let s = owen_scramble(index, hash_u32(pair ^ SALT_INDEX));
+        let point = shifted_point(
+            tile,
+            pixel,
+            s.reverse_bits(),
+            pascal_reversed(s).reverse_bits(),
+        );
+        (point, s)
+    }
 }
 
 /// A point of a digital net (its two coordinates `u` and `v` as 0.32 fixed
@@ -386,14 +401,7 @@ impl PixelSampler for BlueNoise {
     /// and any pixel (see the type's Limits).
     #[inline]
     fn sample_pixel(&self, pixel: [u32; 2], index: u32, dimension: u32) -> Vec2 {
-        let (pair, tile) = self.seeds(pixel, dimension);
-        let s = owen_scramble(index, hash_u32(pair ^ SALT_INDEX));
-        shifted_point(
-            tile,
-            pixel,
-            s.reverse_bits(),
-            pascal_reversed(s).reverse_bits(),
-        )
+        self.point_and_index(pixel, index, dimension).0
     }
 
     /// Dimensions 0 to 2 of [`draw_4d`](Self::draw_4d)'s point.
@@ -411,14 +419,7 @@ impl PixelSampler for BlueNoise {
     /// scrambles of `draw.second()`'s stream.
     #[inline]
     fn draw_4d(&self, draw: Draw) -> Vec4 {
-        let (pair, tile) = self.seeds(draw.pixel, draw.stream);
-        let s = owen_scramble(draw.index, hash_u32(pair ^ SALT_INDEX));
-        let film = shifted_point(
-            tile,
-            draw.pixel,
-            s.reverse_bits(),
-            pascal_reversed(s).reverse_bits(),
-        );
+        let (film, s) = self.point_and_index(draw.pixel, draw.index, draw.stream);
         let (_, lens_tile) = self.seeds(draw.pixel, draw.second().stream);
         let (c2, c3) = dimensions_2_3_reversed(s);
         let lens = shifted_point(lens_tile, draw.pixel, c2.reverse_bits(), c3.reverse_bits());

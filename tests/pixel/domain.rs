@@ -99,14 +99,14 @@ proptest! {
         }
     }
 
-    /// next_4d of the sequences over a pixel's 2^m samples is a
+    /// next_4d of the sequences and blue-noise over a pixel's 2^m samples is a
     /// (3,m,4)-net; its (0, 1) projection a (0,m,2)-net.
     #[test]
     fn four_d_draws_of_the_sequences_are_3_m_4_nets(
         m in 3u32..10, frame in any::<u32>(), x in 0u32..64, y in 0u32..64, depth in 0u32..3,
     ) {
         let spp = 1 << m;
-        for kind in ["sobol", "pmj02", "zsobol"] {
+        for kind in ["sobol", "pmj02", "zsobol", "blue-noise"] {
             let sampler = kind.parse::<PixelSamplerKind>().unwrap().build(spp, [64, 64], frame).unwrap();
             let points: Vec<Vec4> = (0..spp)
                 .map(|i| {
