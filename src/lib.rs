@@ -137,15 +137,14 @@ pub mod warp;
 
 pub use error::{Error, InputText};
 pub use pixel::{
-    AnyPixelSampler, BlueNoise, Domain, DomainSampler, Draw, Padded, PixelCursor, PixelSampler,
-    PixelSamplerKind, Root, ZSobol,
+    AnyPixelSampler, BlueNoise, Domain, Draw, Padded, PixelSampler, PixelSamplerKind, Root, ZSobol,
 };
 pub use primitives::pattern_seed;
 pub use samplers::{
     AnySampler, BlueMultiJittered, CorrelatedMultiJittered, Halton, Hammersley, Jittered,
     LatinHypercube, MultiJittered, NRooks, Pmj02, Random, Regular, SamplerKind, Sobol,
 };
-pub use traits::{Sampler2D, Sequence2D};
+pub use traits::{DomainSampler, Sampler2D, Sequence2D, second_stream, stratified_1d};
 
 // The README's usage example runs as a doctest.
 #[cfg(doctest)]

@@ -1,9 +1,11 @@
 //! The traits of the samplers ([`Sampler2D`] for every one, [`Sequence2D`]
-//! for the progressive sequences, the crate-private `FillOn`) and the
-//! checks their methods share.
+//! for the progressive sequences, [`DomainSampler`] for the draws a
+//! [`Padded`](crate::Padded) pixel sampler makes through them, the
+//! crate-private `FillOn`) and the checks and draws their methods share.
 
-use glam::Vec2;
+use glam::{Vec2, Vec3, Vec4};
 
+use crate::primitives::{child_key, mix64, permute, rand_u32, salt, stratum_to_unit_f32};
 use crate::simd::Isa;
 
 /// A set of `len()` well-distributed points in `[0, 1)^2`, with random access.
@@ -117,6 +119,143 @@ pub trait Sequence2D: Sampler2D {
     /// If `start + out.len()` exceeds `2^32`: the sequence's last index is
     /// `u32::MAX`, and it never wraps around to index 0.
     fn fill_from(&self, start: u32, pattern: u32, out: &mut [Vec2]);
+}
+
+/// A [`Sampler2D`] that [`Padded`](crate::Padded) draws
+/// [`Domain`](crate::Domain) dimensions from: one set per draw, picked by
+/// the draw's `stream` (a well-mixed u64 that is the same for every sample
+/// index of a pixel), in 1 to 4 dimensions.
+///
+/// Every method has a default, so a grid sampler, or a [`Sampler2D`] of
+/// your own, needs only `impl DomainSampler for MySampler {}`: 2D draws are
+/// `sample(index, pattern)` with the stream's low 32 bits as the pattern,
+/// 1D draws the stratified draw below, 3D and 4D padded from a second,
+/// unrelated stream. Each sampler's file overrides what it does better:
+///
+/// | sampler | `domain_1d` | `domain_2d` | `domain_3d` / `domain_4d` |
+/// | --- | --- | --- | --- |
+/// | grid family, [`Hammersley`](crate::Hammersley) | the `n` samples in `n` distinct strata of `[0, 1)` (a keyed permutation of the index, jittered inside the stratum; centred for [`Regular`](crate::Regular)) | the sampler's own set (Hammersley's index keyed-permuted first, since its order is the same for every pattern) | padded: a pair and a 1D draw, or two pairs, from unrelated streams |
+/// | [`Sobol`](crate::Sobol), [`Pmj02`](crate::Pmj02) | Owen-scrambled Sobol' dimension 0: a (0,m,1)-net on every power-of-two prefix | the sampler's own (0,2)-sequence | one Owen-scrambled 4D Sobol' set: (3,m,4)-nets on every power-of-two prefix (`m >= 3`), dimensions (0, 1) a (0,2)-sequence; 3D is its first three coordinates |
+/// | [`Halton`](crate::Halton) | as Sobol's 1D | the sampler's own set | padded |
+/// | [`Random`](crate::Random) | one independent uniform value | independent uniform points (the two halves of one 64-bit mix; not `sample`'s values) | padded |
+///
+/// The progressive sequences read their index through a
+/// [`prefix_shuffle`](crate::primitives::prefix_shuffle) keyed by the
+/// stream, so every power-of-two prefix of a pixel keeps its net while two
+/// draws pair their samples as freely as prefixes allow.
+pub trait DomainSampler: Sampler2D {
+    /// Where sample `index` of a domain keyed `key` lives: `(index in the
+    /// set, key of the set)`. The default is the fixed-size rule: indices
+    /// `p n .. (p + 1) n` are pass `p`, a complete set keyed by `p`. The
+    /// progressive sequences return `(index, key)`: indices past the count
+    /// continue the sequence.
+    #[inline]
+    fn locate(&self, index: u32, key: u64) -> (u32, u64) {
+        let n = self.len();
+        if index < n || n == 0 {
+            (index, key)
+        } else {
+            (index % n, child_key(key, salt::PASS, index / n))
+        }
+    }
+
+    /// Sample `index` of the 1D set picked by `stream`. The default is
+    /// [`stratified_1d`] with jitter.
+    #[inline]
+    fn domain_1d(&self, index: u32, stream: u64) -> f32 {
+        stratified_1d(index, self.len(), stream, true)
+    }
+
+    /// Sample `index` of the 2D set picked by `stream`: by default
+    /// `sample(index, stream as u32)`.
+    #[inline]
+    fn domain_2d(&self, index: u32, stream: u64) -> Vec2 {
+        self.sample(index, stream as u32)
+    }
+
+    /// Sample `index` of the 3D set picked by `stream`: by default a pair
+    /// and a 1D draw of the [`second_stream`].
+    #[inline]
+    fn domain_3d(&self, index: u32, stream: u64) -> Vec3 {
+        let a = self.domain_2d(index, stream);
+        a.extend(self.domain_1d(index, second_stream(stream)))
+    }
+
+    /// Sample `index` of the 4D set picked by `stream`: by default two
+    /// pairs, the second from the [`second_stream`].
+    #[inline]
+    fn domain_4d(&self, index: u32, stream: u64) -> Vec4 {
+        let a = self.domain_2d(index, stream);
+        let b = self.domain_2d(index, second_stream(stream));
+        Vec4::new(a.x, a.y, b.x, b.y)
+    }
+}
+
+impl<S: DomainSampler + ?Sized> DomainSampler for &S {
+    #[inline]
+    fn locate(&self, index: u32, key: u64) -> (u32, u64) {
+        (**self).locate(index, key)
+    }
+    #[inline]
+    fn domain_1d(&self, index: u32, stream: u64) -> f32 {
+        (**self).domain_1d(index, stream)
+    }
+    #[inline]
+    fn domain_2d(&self, index: u32, stream: u64) -> Vec2 {
+        (**self).domain_2d(index, stream)
+    }
+    #[inline]
+    fn domain_3d(&self, index: u32, stream: u64) -> Vec3 {
+        (**self).domain_3d(index, stream)
+    }
+    #[inline]
+    fn domain_4d(&self, index: u32, stream: u64) -> Vec4 {
+        (**self).domain_4d(index, stream)
+    }
+}
+
+impl<S: Sampler2D + ?Sized> Sampler2D for &S {
+    #[inline]
+    fn len(&self) -> u32 {
+        (**self).len()
+    }
+    #[inline]
+    fn sample(&self, index: u32, pattern: u32) -> Vec2 {
+        (**self).sample(index, pattern)
+    }
+    #[inline]
+    fn fill(&self, pattern: u32, out: &mut [Vec2]) {
+        (**self).fill(pattern, out)
+    }
+}
+
+/// A stream unrelated to `stream` (one [`mix64`]): the second pattern of a
+/// padded 3D or 4D draw.
+#[inline(always)]
+#[must_use]
+pub const fn second_stream(stream: u64) -> u64 {
+    mix64(stream ^ salt::SECOND)
+}
+
+/// Sample `index` of `n` in 1D: stratum `permute(index, n, key)` of `n`
+/// equal strata of `[0, 1)` (a keyed uniform permutation, so every sample
+/// lands in its own stratum), at a hashed position inside it (`jitter`)
+/// or at its centre; key and jitter come from the two halves of `stream`.
+/// Exact on the f32 values for `n <= 2^24`
+/// ([`stratum_to_unit_f32`](crate::primitives::stratum_to_unit_f32)); an
+/// index at or past `n` is reduced modulo `n`.
+#[inline]
+#[must_use]
+pub fn stratified_1d(index: u32, n: u32, stream: u64, jitter: bool) -> f32 {
+    let n = n.clamp(1, crate::primitives::MAX_STRATA);
+    let index = if index < n { index } else { index % n };
+    let stratum = permute(index, n, stream as u32);
+    let bits = if jitter {
+        rand_u32(index, (stream >> 32) as u32 ^ salt::JITTER_1D)
+    } else {
+        1 << 31
+    };
+    stratum_to_unit_f32(stratum, n, bits)
 }
 
 /// `fill` on a chosen instruction set: what every sampler's

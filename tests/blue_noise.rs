@@ -22,12 +22,13 @@ proptest! {
         frame in any::<u32>(),
         dimension in prop_oneof![0u32..8, any::<u32>()],
         m in 0u32..=12,
-        block in 0u32..4,
+        block in 0u32..2,
     ) {
         let sampler = BlueNoise::unbounded([u32::MAX, u32::MAX], frame).unwrap();
         let pixel = [x % u32::MAX, y % u32::MAX];
         let n = 1u32 << m;
-        // The prefix and the next aligned blocks.
+        // The prefix and the rest of the next prefix (the indices between
+        // two powers of two are shuffled among themselves only).
         let points: Vec<Vec2> = (block * n..(block + 1) * n)
             .map(|i| sampler.sample_pixel(pixel, i, dimension))
             .collect();
@@ -93,10 +94,10 @@ fn constructors_check_their_input() {
     for spp in [1, 2, 3, 5, 12, 100, 1 << 16, (1 << 16) + 1, u32::MAX] {
         let sampler = BlueNoise::new(spp, [3840, 2160], 1).unwrap();
         assert_eq!(sampler.samples_per_pixel(), Some(spp));
-        assert_eq!(sampler.count(), Some(spp));
+        assert_eq!(sampler.samples_per_pixel(), Some(spp));
     }
     let progressive = BlueNoise::unbounded([u32::MAX, u32::MAX], 0).unwrap();
-    assert_eq!(progressive.count(), None);
+    assert_eq!(progressive.samples_per_pixel(), None);
     assert_eq!(progressive.samples_per_pixel(), None);
     assert_eq!(progressive.resolution(), [u32::MAX, u32::MAX]);
     assert_eq!(BlueNoise::new(3, [5, 6], 9).unwrap().frame(), 9);

@@ -360,13 +360,14 @@ fn independent_reference_values_hold() {
     assert_eq!(hash_u32(0), 0);
     assert_eq!(u32_to_unit_f32(0x8000_0000), 0.5);
     assert_eq!(u32_to_unit_f32(u32::MAX).to_bits(), 0x3f7f_ffff);
-    // ZSobol, pixel (5, 9) of 64 x 48 at 16 spp, frame 0, pair 0, sample 0
-    // (the Python transcription of the algorithm in ZSobol's docs).
+    // ZSobol, pixel (5, 9) of 64 x 48 at 16 spp, frame 0, draw 0, sample 0
+    // (a Python transcription of ZSobol's construction and of the domain's
+    // key, stream and prefix shuffle, written from their docs).
     let zsobol = ZSobol::new(16, [64, 48], 0).unwrap();
     let p = zsobol.sample_pixel([5, 9], 0, 0);
-    assert_eq!([p.x.to_bits(), p.y.to_bits()], [0x3c31_6000, 0x3f3a_2ed1]);
+    assert_eq!([p.x.to_bits(), p.y.to_bits()], [0x3efd_745e, 0x3f0b_2a4e]);
     let p = ZSobol::new(8, [1920, 1080], 0xdead_beef)
         .unwrap()
         .sample_pixel([1000, 700], 7, 3);
-    assert_eq!([p.x.to_bits(), p.y.to_bits()], [0x3dc4_33d0, 0x3f7f_5320]);
+    assert_eq!([p.x.to_bits(), p.y.to_bits()], [0x3f61_b773, 0x3f1a_2272]);
 }

@@ -5,26 +5,23 @@
 
 use glam::{Vec2, Vec3, Vec4};
 
-use crate::primitives::{hash_combine, hash_u32, owen_scramble, owen_scramble_reversed};
-// Sobol dimension 1 in reversed bit order (the Pascal matrix mod 2).
-use crate::pixel::Draw;
-use crate::samplers::sequence::sobol::pascal_reversed;
-use crate::samplers::sequence::sobol_4d::dimensions_2_3_reversed;
-use crate::{Error, PixelSampler};
-
-/// Salts that split a dimension pair's seed into the index shuffle's and
-/// the two coordinates' scramble seeds (fixed odd words with about half
-/// their bits set).
-const SALT_INDEX: u32 = 0x2c1b_3c6d;
-const SALT_X: u32 = 0x297a_2d39;
-const SALT_Y: u32 = 0x9e48_5565;
-const SALT_PIXEL: u32 = 0x6a09_e667;
-const SALT_TRANSLATE: u32 = 0x3c6e_f372;
+use super::{Draw, PixelSampler, Root};
+use crate::Error;
+use crate::primitives::morton::{morton, morton_add};
+use crate::primitives::{hash_u32, mix64, owen_scramble_reversed, prefix_shuffle, salt};
+use crate::samplers::sequence::digital::{
+    OwenSeeds, bits_to_point, scrambled_bits, sobol_4d_point, sobol_reversed,
+};
+use crate::traits::second_stream;
 
 /// Bits of `x` and `y` the pixel columns cover: a `65536 x 65536` square.
 const TILE_BITS: u32 = 16;
 
-/// Fixed-point digits of a coordinate: the f32 resolution of `[0, 1)`.
+/// Bits of the (translated) Morton code below the squares that share one
+/// sample order: `16 x 16` pixels.
+const ORDER_SQUARE_BITS: u32 = 8;
+
+/// Fixed-point digits of a pixel column: the f32 resolution of `[0, 1)`.
 const DIGITS: u32 = 24;
 
 /// The pixel columns of the generator matrix: entry `2 j` is the
@@ -74,8 +71,11 @@ const PIXEL_COLUMNS: [[u32; 2]; 32] = [
     [0xacaef8, 0xbe91d9],
 ];
 
-/// [`PIXEL_COLUMNS`] combined per byte of the Morton code: entry
-/// `[b][v]` is the xor of the columns of the set bits of `v << 8 b`.
+/// [`PIXEL_COLUMNS`] in the reversed-digit form the scrambles work in
+/// (bit `k` the digit of weight `2^-(k+1)`), combined per byte of the
+/// bit-reversed Morton code: entry `[b][v]` is the xor of the columns of
+/// the code bits whose reversed positions are the set bits of `v << 8 b`
+/// (reversed bit `8 b + i` is code bit `31 - 8 b - i`).
 const PIXEL_TABLE: [[[u32; 2]; 256]; 4] = {
     let mut table = [[[0u32; 2]; 256]; 4];
     let mut b = 0;
@@ -85,9 +85,9 @@ const PIXEL_TABLE: [[[u32; 2]; 256]; 4] = {
             let mut bit = 0;
             while bit < 8 {
                 if v >> bit & 1 == 1 {
-                    let column = PIXEL_COLUMNS[8 * b + bit];
-                    table[b][v][0] ^= column[0];
-                    table[b][v][1] ^= column[1];
+                    let column = PIXEL_COLUMNS[31 - 8 * b - bit];
+                    table[b][v][0] ^= (column[0] << (32 - DIGITS)).reverse_bits();
+                    table[b][v][1] ^= (column[1] << (32 - DIGITS)).reverse_bits();
                 }
                 bit += 1;
             }
@@ -106,20 +106,25 @@ const PIXEL_TABLE: [[[u32; 2]; 256]; 4] = {
 ///
 /// # Construction
 ///
-/// For frame `f`, dimension pair `d`, pixel `p = (x, y)` and sample
-/// `index`, in 24-digit fixed point:
+/// For pixel `p = (x, y)`, sample `index` and a draw whose stream (from
+/// the frame, the pixel's `65536 x 65536` tile, the domain's key and the
+/// draw counter) seeds everything below:
 ///
-/// 1. `s = owen_scramble(index, seed_i)`: Burley's index shuffle, the same
-///    for every pixel, so each power-of-two prefix is an aligned block of
-///    the sequence, and different pairs visit it in unrelated orders.
+/// 1. `s = prefix_shuffle(index, seed_i)` ([`prefix_shuffle`]), keyed
+///    by the draw and by the pixel's `16 x 16` square of the translated
+///    grid (step 2): each power-of-two prefix is the same aligned block of
+///    the sequence in every pixel, the pixels of a square visit their
+///    samples in one order (so squares complement each other at every
+///    prefix), and different draws, and squares, pair their samples in
+///    unrelated orders.
 /// 2. `c`: the Morton code (bits of `x` and `y` interleaved) of the pixel
-///    translated by a hashed offset (per frame, pair and tile, modulo the
-///    tile), then shuffled the same way as the index (per frame, pair and
-///    tile). Aligned squares of the translated grid keep aligned blocks of
+///    translated by a hashed offset (per draw and tile, modulo the tile),
+///    then shuffled by a nested scramble (per draw and tile): aligned
+///    blocks of codes map onto aligned blocks. Aligned squares of the translated grid keep aligned blocks of
 ///    codes, so each square's shifts are one coset of its columns, while
 ///    which pixel gets which shift, and where the squares' edges lie,
-///    change with every frame and pair: two pairs of one pixel have
-///    unrelated shifts. (A fixed arrangement per 16 x 16 block, the same
+///    change with every draw: two draws of one pixel have unrelated
+///    shifts. (A fixed arrangement per 16 x 16 block, the same
 ///    for every pair, lowers the blurred error on image-space integrands
 ///    but ties a pixel's draws together across the film; see
 ///    `docs/blue_noise.md`.)
@@ -127,8 +132,7 @@ const PIXEL_TABLE: [[[u32; 2]; 256]; 4] = {
 ///    [`Sobol`](crate::Sobol) generator matrices), and `G c` the xor of the
 ///    pixel columns `G` of the set bits of `c`: a digital shift per pixel.
 /// 4. The point is `q` with both coordinates Owen-scrambled
-///    ([`owen_scramble_reversed`]), seeds hashed from `f`, `d` and the
-///    `65536 x 65536` tile of the pixel.
+///    ([`owen_scramble_reversed`]), seeds from the draw's stream.
 ///
 /// A digital shift maps elementary intervals onto elementary intervals,
 /// and so does an Owen scramble: each pixel's power-of-two prefixes keep
@@ -159,11 +163,12 @@ const PIXEL_TABLE: [[[u32; 2]; 256]; 4] = {
 /// - A domain's `next_4d` is one point of a 4D Owen-scrambled Sobol set per
 ///   pixel, each half shifted as a pair is: every power-of-two prefix is a
 ///   (3,m,4)-net, film and lens stratified together as in `Padded<Sobol>`.
-/// - Dimension pairs and frames use unrelated translations, shuffles and
-///   scrambles, so they are decorrelated: two pairs of one pixel look
+/// - Draws and frames use unrelated translations, shuffles and
+///   scrambles, so they are decorrelated: two draws of one pixel look
 ///   independent across the film (chi-square of their first coordinates
-///   near its degrees of freedom), at each index half the pixels fall in
-///   each half of `[0, 1)`, and averaging frames converges.
+///   near its degrees of freedom) and over the pixel's samples (tested for
+///   every pixel sampler), at each index half the pixels fall in each half
+///   of `[0, 1)`, and averaging frames converges.
 /// - No tile: the 2^32 pixels of a `65536 x 65536` square get distinct
 ///   shifts, and no two of them the same set of 2^16 or fewer samples;
 ///   beyond that square, its position is hashed into the scramble seeds.
@@ -172,14 +177,13 @@ const PIXEL_TABLE: [[[u32; 2]; 256]; 4] = {
 ///
 /// # Cost
 ///
-/// Per sample: the pair's seeds and the translation (seven hashes), the
-/// index shuffle, the code shuffle and two coordinate scrambles (four Owen scrambles, one more
-/// than a [`Sobol`](crate::Sobol) point), the Morton code and four
-/// lookups in an 8 KiB table computed at compile time from the 256-byte
-/// column list. Callgrind counts about 410 x86-64 instructions per
-/// `sample_pixel` through `&dyn PixelSampler` at scattered pixels (release
-/// build; the translation adds 4%): 1.6 times `Padded<Sobol>`'s 264 and
-/// 0.6 times `ZSobol`'s 662.
+/// `start`: the pixel's Morton code, once. Per draw: a
+/// [`Sobol`](crate::Sobol) draw plus one more [`mix64`] (the translation
+/// and the code's scramble seed), two adds of dilated integers (the
+/// translated code), one bit reversal and one Owen scramble of the code,
+/// and four lookups in an 8 KiB table computed at compile time from the
+/// 256-byte column list. `docs/performance.md` has the ratio to
+/// `Padded<Sobol>`'s draw.
 ///
 /// # Limits
 ///
@@ -197,11 +201,11 @@ const PIXEL_TABLE: [[[u32; 2]; 256]; 4] = {
 /// ```
 /// use wellspread::{BlueNoise, PixelSampler, metrics::is_net_base2};
 /// let sampler = BlueNoise::new(12, [320, 240], 7)?;
-/// for dimension in 0..3 {
+/// for pair in 0..3 {
 ///     // Every power-of-two prefix of a 12-sample pixel is a net.
 ///     for n in [1, 2, 4, 8] {
 ///         let points: Vec<_> = (0..n)
-///             .map(|i| sampler.sample_pixel([100, 50], i, dimension))
+///             .map(|i| sampler.sample_pixel([100, 50], i, pair))
 ///             .collect();
 ///         assert!(is_net_base2(&points)?);
 ///     }
@@ -223,10 +227,13 @@ const PIXEL_TABLE: [[[u32; 2]; 256]; 4] = {
 ///   Numer. Anal. 34(5): why scrambled nets cancel Walsh coefficients.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct BlueNoise {
-    /// Samples per pixel; `None` for a progressive (unbounded) sampler.
-    samples_per_pixel: Option<u32>,
+    /// Samples per pixel; 0 for a progressive (unbounded) sampler (a
+    /// plain u32 keeps the domain small).
+    samples_per_pixel: u32,
     resolution: [u32; 2],
     frame: u32,
+    /// The frame's part of every root key, hashed once here.
+    frame_key: u64,
 }
 
 impl BlueNoise {
@@ -244,7 +251,7 @@ impl BlueNoise {
             return Err(Error::ZeroSamples);
         }
         Self::unbounded(resolution, frame).map(|s| Self {
-            samples_per_pixel: Some(samples_per_pixel),
+            samples_per_pixel,
             ..s
         })
     }
@@ -267,9 +274,10 @@ impl BlueNoise {
             });
         }
         Ok(Self {
-            samples_per_pixel: None,
+            samples_per_pixel: 0,
             resolution,
             frame,
+            frame_key: mix64(frame as u64 ^ salt::BLUE_NOISE_FRAME),
         })
     }
 
@@ -285,108 +293,56 @@ impl BlueNoise {
         self.frame
     }
 
-    /// The sample count, `None` for a progressive sampler.
-    #[inline]
-    pub const fn count(&self) -> Option<u32> {
-        self.samples_per_pixel
-    }
-
-    /// The digital shift `G code` of a pixel whose (shuffled) Morton code
-    /// is `code`, in 24-digit natural order, x then y.
-    #[inline]
-    pub(crate) fn pixel_shift(code: u32) -> [u32; 2] {
+    /// The digital shift `G code` of a pixel whose (shuffled) Morton code,
+    /// bit-reversed, is `code_reversed`, in reversed-digit form, x then y.
+    #[inline(always)]
+    pub(crate) fn pixel_shift(code_reversed: u32) -> [u32; 2] {
         let mut shift = [0, 0];
         for (b, table) in PIXEL_TABLE.iter().enumerate() {
-            let entry = table[(code >> (8 * b)) as usize & 0xff];
+            let entry = table[(code_reversed >> (8 * b)) as usize & 0xff];
             shift[0] ^= entry[0];
             shift[1] ^= entry[1];
         }
         shift
     }
-}
 
-/// `x` and `y` (their low 16 bits) interleaved, `x` in the even bits.
-#[inline(always)]
-const fn morton(x: u32, y: u32) -> u32 {
-    spread_bits(x) | spread_bits(y) << 1
-}
-
-/// The low 16 bits of `v` moved to the even positions.
-#[inline(always)]
-const fn spread_bits(v: u32) -> u32 {
-    let mut v = v & ((1 << TILE_BITS) - 1);
-    v = (v | v << 8) & 0x00ff_00ff;
-    v = (v | v << 4) & 0x0f0f_0f0f;
-    v = (v | v << 2) & 0x3333_3333;
-    v = (v | v << 1) & 0x5555_5555;
-    v
-}
-
-/// `2^-24 t` for `t < 2^24`, exactly.
-#[inline(always)]
-fn unit(t: u32) -> f32 {
-    t as f32 * (1.0 / (1u32 << DIGITS) as f32)
-}
-
-impl BlueNoise {
-    /// The seed of dimension pair `dimension` in this frame, and the seed
-    /// of its `65536 x 65536` tile at `pixel`.
+    /// The sequence index of a draw's sample and the pixel's shift.
+    ///
+    /// The pixel's Morton code is translated and scrambled by a second mix
+    /// of the stream, then looked up for the shift. The index is read
+    /// through a [`prefix_shuffle`] keyed by the draw and by the pixel's
+    /// `16 x 16` square of the translated grid: inside a square (the levels
+    /// the columns were searched for) every pixel visits its samples in the
+    /// same order, so squares complement each other at every prefix, not
+    /// only at powers of two; from square to square two draws pair their
+    /// samples differently. Every power-of-two prefix stays the same
+    /// aligned block of the sequence.
     #[inline(always)]
-    fn seeds(&self, [x, y]: [u32; 2], dimension: u32) -> (u32, u32) {
-        let pair = hash_combine(hash_u32(self.frame), dimension);
+    fn index_and_shift(draw: Draw, seeds: OwenSeeds) -> (u32, [u32; 2]) {
+        let (code, seed) = Self::translated(draw.pixel_state, draw.stream);
+        let order = hash_u32(seeds.index ^ code >> ORDER_SQUARE_BITS);
         (
-            pair,
-            hash_combine(pair, hash_combine(x >> TILE_BITS, y >> TILE_BITS)),
+            prefix_shuffle(draw.index, order),
+            Self::shift_of(code, seed),
         )
     }
 
-    /// Sample `index` of `pixel` in dimension pair `dimension`, and the
-    /// shuffled sequence index it is the point of.
+    /// The Morton code `code` of a pixel translated for a draw with
+    /// `stream`, and the seed of its scramble: a second mix of the stream,
+    /// whose low half is a random offset already in Morton form (its even
+    /// bits move x, its odd bits y).
     #[inline(always)]
-    fn point_and_index(&self, pixel: [u32; 2], index: u32, dimension: u32) -> (Vec2, u32) {
-        let (pair, tile) = self.seeds(pixel, dimension);
-        let s = owen_scramble(index, hash_u32(pair ^ SALT_INDEX));
-        let point = shifted_point(
-            tile,
-            pixel,
-            s.reverse_bits(),
-            pascal_reversed(s).reverse_bits(),
-        );
-        (point, s)
+    fn translated(code: u32, stream: u64) -> (u32, u32) {
+        let extra = mix64(stream ^ salt::BLUE_NOISE_PIXEL);
+        (morton_add(code, extra as u32), (extra >> 32) as u32)
     }
-}
 
-/// A point of a digital net (its two coordinates `u` and `v` as 0.32 fixed
-/// point, natural order) shifted by the pixel columns of `pixel`'s code and
-/// Owen-scrambled, both seeded by `tile`.
-#[inline(always)]
-fn shifted_point(tile: u32, [x, y]: [u32; 2], u: u32, v: u32) -> Vec2 {
-    // The pixel's Morton code shuffled as Burley shuffles an index:
-    // aligned blocks of codes (aligned squares of pixels) map onto
-    // aligned blocks, so each square's shifts stay one coset of its
-    // columns, while which pixel gets which shift changes with every
-    // frame, pair and tile (so two pairs of one pixel are unrelated).
-    // Before that, the pixel grid is translated by a hashed offset (per
-    // frame, pair and tile, modulo the tile), so the aligned squares of
-    // two pairs do not line up: their shifts at one pixel share no
-    // block structure.
-    let t = hash_u32(tile ^ SALT_TRANSLATE);
-    let code = owen_scramble(
-        morton(x.wrapping_add(t), y.wrapping_add(t >> 16)),
-        hash_u32(tile ^ SALT_PIXEL),
-    );
-    let [gx, gy] = BlueNoise::pixel_shift(code);
-    // Natural-order 24-digit coordinates of the shifted point.
-    let qx = (u >> (32 - DIGITS)) ^ gx;
-    let qy = (v >> (32 - DIGITS)) ^ gy;
-    // The scramble works in reversed order on 32 bits: the 24 digits
-    // sit in bits 0..24, and the 8 below the f32 resolution are dropped.
-    let scramble = |q: u32, salt: u32| {
-        owen_scramble_reversed((q << (32 - DIGITS)).reverse_bits(), hash_u32(tile ^ salt))
-            .reverse_bits()
-            >> (32 - DIGITS)
-    };
-    Vec2::new(unit(scramble(qx, SALT_X)), unit(scramble(qy, SALT_Y)))
+    /// The shift of a translated code: the code's nested scramble
+    /// (`owen_scramble`, left bit-reversed for the table), looked up.
+    #[inline(always)]
+    fn shift_of(code: u32, seed: u32) -> [u32; 2] {
+        Self::pixel_shift(owen_scramble_reversed(code.reverse_bits(), seed))
+    }
 }
 
 impl PixelSampler for BlueNoise {
@@ -394,14 +350,29 @@ impl PixelSampler for BlueNoise {
     /// [`unbounded`](BlueNoise::unbounded).
     #[inline]
     fn samples_per_pixel(&self) -> Option<u32> {
-        self.samples_per_pixel
+        match self.samples_per_pixel {
+            0 => None,
+            n => Some(n),
+        }
     }
 
-    /// Sample `index` of `pixel` in dimension pair `dimension`; any index
-    /// and any pixel (see the type's Limits).
+    /// The key from the frame and the pixel's `65536 x 65536` tile; the
+    /// pixel state its Morton code inside the tile.
+    #[inline(always)]
+    fn root(&self, [x, y]: [u32; 2]) -> Root {
+        let tile = x >> TILE_BITS | (y >> TILE_BITS) << TILE_BITS;
+        Root {
+            key: self.frame_key ^ u64::from(tile) << 32,
+            pixel_state: morton(x, y),
+        }
+    }
+
     #[inline]
-    fn sample_pixel(&self, pixel: [u32; 2], index: u32, dimension: u32) -> Vec2 {
-        self.point_and_index(pixel, index, dimension).0
+    fn draw_2d(&self, draw: Draw) -> Vec2 {
+        let seeds = OwenSeeds::from_stream(draw.stream);
+        let (s, [gx, gy]) = Self::index_and_shift(draw, seeds);
+        let (x, y) = sobol_reversed(s);
+        bits_to_point(scrambled_bits(x ^ gx, y ^ gy, seeds))
     }
 
     /// Dimensions 0 to 2 of [`draw_4d`](Self::draw_4d)'s point.
@@ -412,41 +383,23 @@ impl PixelSampler for BlueNoise {
 
     /// One point of a 4D Owen-scrambled Sobol set per pixel, as
     /// `Padded<Sobol>` draws it (a (3,m,4)-net at every power-of-two
-    /// prefix, film and lens stratified together), with each pair shifted
-    /// as [`sample_pixel`](Self::sample_pixel) shifts it: the first two
-    /// coordinates are `draw_2d(draw)`, the last two are Sobol dimensions
-    /// 2 and 3 of the same shuffled index under the pixel shift and
-    /// scrambles of `draw.second()`'s stream.
+    /// prefix, film and lens stratified together), each pair shifted as
+    /// [`draw_2d`](Self::draw_2d) shifts it: the first two coordinates are
+    /// `draw_2d(draw)`, the last two Sobol' dimensions 2 and 3 under the
+    /// shift of an unrelated stream.
     #[inline]
     fn draw_4d(&self, draw: Draw) -> Vec4 {
-        let (film, s) = self.point_and_index(draw.pixel, draw.index, draw.stream);
-        let (_, lens_tile) = self.seeds(draw.pixel, draw.second().stream);
-        let (c2, c3) = dimensions_2_3_reversed(s);
-        let lens = shifted_point(lens_tile, draw.pixel, c2.reverse_bits(), c3.reverse_bits());
-        Vec4::new(film.x, film.y, lens.x, lens.y)
-    }
-
-    /// A progressive sequence: an index past the count continues it, so
-    /// every prefix stays a net (the crate's edge rule for sequences).
-    #[inline]
-    fn locate(&self, index: u32, key: u32) -> (u32, u32) {
-        (index, key)
+        let (s, [gx, gy]) = Self::index_and_shift(draw, OwenSeeds::from_stream(draw.stream));
+        let (lens, seed) = Self::translated(draw.pixel_state, second_stream(draw.stream));
+        let [hx, hy] = Self::shift_of(lens, seed);
+        sobol_4d_point(s, draw.stream, [gx, gy, hx, hy])
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn morton_interleaves_x_in_the_even_bits() {
-        assert_eq!(morton(1, 0), 1);
-        assert_eq!(morton(0, 1), 2);
-        assert_eq!(morton(3, 3), 15);
-        assert_eq!(morton(0b101, 0b010), 0b01_10_01);
-        assert_eq!(morton(0xffff, 0), 0x5555_5555);
-        assert_eq!(morton(0xffff, 0xffff), u32::MAX);
-    }
+    use crate::samplers::sequence::digital::pascal_reversed;
 
     /// Rank over GF(2) of 48-bit vectors.
     fn rank(vectors: &[u64]) -> usize {
@@ -528,7 +481,12 @@ mod tests {
                     expect[1] ^= column[1];
                 }
             }
-            assert_eq!(BlueNoise::pixel_shift(code), expect, "({x}, {y})");
+            let [rx, ry] = BlueNoise::pixel_shift(code.reverse_bits());
+            let natural = [
+                rx.reverse_bits() >> (32 - DIGITS),
+                ry.reverse_bits() >> (32 - DIGITS),
+            ];
+            assert_eq!(natural, expect, "({x}, {y})");
         }
     }
 }

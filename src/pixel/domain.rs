@@ -3,35 +3,38 @@
 use glam::{Vec2, Vec3, Vec4};
 
 use super::{Draw, PixelSampler};
-use crate::primitives::{hash_combine, hash_u32};
+use crate::primitives::{child_key, salt};
 
-/// Weyl increment between the streams of consecutive draws: the fraction
-/// bits of sqrt(2), odd, so `key + d W` visits every u32 before repeating.
-const WEYL: u32 = 0x6a09_e667;
-
-/// One pixel sample's dimensions, owned: the sampler by value, the pixel,
-/// the sample index, a key and a dimension counter (`Copy + Send + Sync +
-/// 'static` when the sampler is). Made by [`PixelSampler::start`].
+/// One pixel sample's dimensions, owned: the sampler by value, the sample
+/// index, a 64-bit key, a draw counter and the sampler's pixel state
+/// (`Copy + Send + Sync + 'static` when the sampler is). Made by
+/// [`PixelSampler::start`].
 ///
 /// # Model
 ///
 /// A domain is a node of a tree (as in OpenQMC's domains). Each node has
-/// a 32-bit key; [`branch`](Self::branch) and [`split`](Self::split) derive
+/// a 64-bit key; [`branch`](Self::branch) and [`split`](Self::split) derive
 /// children from the key alone, and the draws `next_1d` ... `next_4d` read
-/// the node's dimensions 0, 1, 2, ... one per call, whatever their width.
-/// So a light's code can take its own samples from `d.branch(LIGHT)` without
-/// knowing what the caller drew, and bounce `b` of a path of any depth uses
-/// `d.branch(BOUNCE).branch(b)`.
+/// the node's draws 0, 1, 2, ... one per call, whatever their width.
 ///
 /// # Properties
 ///
 /// - Draw `k` of a domain uses the pattern picked by `stream =
-///   hash(key + k W)`, the same for every sample index of the pixel: over a
-///   pixel's samples each draw is one set of the sampler, with its
-///   guarantees (see each sampler's `draw_*` for what each width gives).
-/// - `d.branch(k)` depends only on `d`'s key, pixel and index, never on
-///   how many draws `d` made; siblings `branch(k1)`, `branch(k2)` and the
-///   parent's own draws use unrelated patterns.
+///   mix64(key + k W)`, the same for every sample index of the pixel: over
+///   a pixel's samples each draw is one set of the sampler, with its
+///   guarantees (see [`DomainSampler`](crate::DomainSampler) for what each
+///   width gives).
+/// - **Independent draws.** Draws from different keys (`branch(k1)` and
+///   `branch(k2)`, a branch and its parent's own draws, `split` children
+///   and their siblings) and successive draws of one domain pair their
+///   samples like independently shuffled stratified sets: measured per
+///   pixel over its samples and tested for every pixel sampler
+///   (`tests/pixel/independence.rs`). A progressive sequence keeps every
+///   power-of-two prefix a net, which limits how freely two draws can pair
+///   (about 1.1x the correlation of independent sets at 4 and 16 samples,
+///   1.0x from 64: see [`prefix_shuffle`](crate::primitives::prefix_shuffle)).
+/// - `d.branch(k)` depends only on `d`'s key, pixel state and index, never
+///   on how many draws `d` made.
 /// - `d.split(key, count, j)` is sample `index * count + j` of the child
 ///   keyed `key`: over `j < count` and the pixel's `n` sample indices, the
 ///   `n count` children are samples `0 .. n count` of one pattern. For the
@@ -39,20 +42,48 @@ const WEYL: u32 = 0x6a09_e667;
 ///   two; for fixed-size samplers it is `count` complete sets (passes, see
 ///   [`PixelSampler`]'s edges), each with its guarantees.
 ///
+/// # Which draw for what
+///
+/// - **One key per purpose** (`branch(LIGHT)`, `branch(BOUNCE).branch(b)`)
+///   when code that draws does not know what was drawn before it: a
+///   light's sampling routine, a material's, bounce `b` of a path of any
+///   depth. **Call order** (successive `next_*` of one domain) inside one
+///   routine that always draws the same sequence. Both give independent
+///   draws; keys make the layout robust to code changes.
+/// - **A discrete choice followed by a draw** (pick a light, then a point
+///   on it): take the choice from a `next_1d` and the point from the next
+///   draw (or from `branch(light_index)` if the point's routine belongs to
+///   the light), rather than reusing the remapped remainder of the choice's
+///   value: the stratification of a remapped value is only as fine as the
+///   choice left it.
+/// - **`next_4d` over two `next_2d`** when the four values feed one
+///   integrand together (film and lens under depth of field, a light point
+///   and a BSDF direction combined by MIS): for the sequences it is one
+///   point of a 4D Owen-scrambled Sobol' set, stratified in all four
+///   dimensions jointly, where two `next_2d` are each stratified but
+///   paired like independent sets (never worse than white noise).
+///
 /// # Cost
 ///
-/// `start`: the sampler's [`root`](PixelSampler::root) (for [`Padded`](crate::Padded)
-/// one 64-bit mix of the pixel). Each draw: one multiply-add, one
-/// [`hash_u32`] and the sampler's kernel. `branch`: one
-/// [`hash_combine`]; `split`: one more, a multiply and the sampler's
-/// [`locate`](PixelSampler::locate). `cargo bench --bench speed --
-/// domain-ratio` measures `start` plus one draw against a PCG hash making
-/// two floats, per back end.
+/// `start`: the sampler's [`root`](PixelSampler::root) and
+/// [`locate`](PixelSampler::locate) (for [`Padded`](crate::Padded) a few
+/// integer operations, no hash). Each draw: one
+/// [`mix64`](crate::primitives::mix64) and the sampler's kernel. `branch`
+/// and `split`: one `mix64` and a multiply-add (`split` also the sampler's
+/// `locate`). `cargo bench --bench speed -- domain-ratio` measures `start`
+/// plus draws against a PCG hash making two floats, per back end
+/// (`docs/performance.md`).
+///
+/// # Size
+///
+/// The sampler plus 24 bytes (a u64 key, the index, the draw counter and
+/// the pixel state); `size_of` is tested per sampler in
+/// `tests/pixel/domain.rs` and listed in `docs/performance.md`.
 ///
 /// # Limits
 ///
-/// - The dimension counter wraps after 2^32 draws (no panic), after which
-///   the streams repeat.
+/// - The draw counter wraps after 2^32 draws (no panic), after which the
+///   streams repeat.
 /// - `split` with `count = 0` is a debug-build panic; a release build
 ///   treats it as `count = 1`. `j >= count` is a debug-build panic; a
 ///   release build uses `j` as given (sample `index * count + j`, which
@@ -72,33 +103,31 @@ const WEYL: u32 = 0x6a09_e667;
 /// d.next_2d();
 /// d.next_4d();
 /// assert_eq!(d.branch(7), light); // what the parent drew does not matter
-/// assert_eq!(d.dimension(), 2);
+/// assert_eq!(d.draws(), 2);
 /// # Ok::<(), wellspread::Error>(())
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Domain<S> {
-    sampler: S,
-    pixel: [u32; 2],
-    pixel_state: u32,
+    key: u64,
     index: u32,
-    key: u32,
-    dimension: u32,
+    draws: u32,
+    pixel_state: u32,
+    sampler: S,
 }
 
 impl<S: PixelSampler> Domain<S> {
-    /// Sample `index` of `pixel` of `sampler`, at dimension 0 of the root
+    /// Sample `index` of `pixel` of `sampler`, at draw 0 of the root
     /// domain; [`PixelSampler::start`] calls this.
     #[inline(always)]
     pub fn start(sampler: S, pixel: [u32; 2], index: u32) -> Self {
         let root = sampler.root(pixel);
         let (index, key) = sampler.locate(index, root.key);
         Self {
-            sampler,
-            pixel,
-            pixel_state: root.pixel,
-            index,
             key,
-            dimension: 0,
+            index,
+            draws: 0,
+            pixel_state: root.pixel_state,
+            sampler,
         }
     }
 
@@ -106,12 +135,6 @@ impl<S: PixelSampler> Domain<S> {
     #[inline]
     pub const fn sampler(&self) -> &S {
         &self.sampler
-    }
-
-    /// The pixel, `[x, y]`.
-    #[inline]
-    pub const fn pixel(&self) -> [u32; 2] {
-        self.pixel
     }
 
     /// The sample index within its set (after the edge rule of
@@ -123,45 +146,41 @@ impl<S: PixelSampler> Domain<S> {
 
     /// This domain's key.
     #[inline]
-    pub const fn key(&self) -> u32 {
+    pub const fn key(&self) -> u64 {
         self.key
     }
 
-    /// How many draws this domain has made (the next draw's dimension).
+    /// How many draws this domain has made, whatever their widths (the
+    /// next draw's number).
     #[inline]
-    pub const fn dimension(&self) -> u32 {
-        self.dimension
+    pub const fn draws(&self) -> u32 {
+        self.draws
     }
 
-    /// The next draw's inputs; advances the dimension counter.
+    /// The next draw's inputs; advances the draw counter.
     #[inline(always)]
     fn advance(&mut self) -> Draw {
-        let stream = hash_u32(self.key.wrapping_add(self.dimension.wrapping_mul(WEYL)));
-        self.dimension = self.dimension.wrapping_add(1);
-        Draw {
-            pixel: self.pixel,
-            pixel_state: self.pixel_state,
-            index: self.index,
-            stream,
-        }
+        let draw = Draw::new(self.key, self.draws, self.index, self.pixel_state);
+        self.draws = self.draws.wrapping_add(1);
+        draw
     }
 
-    /// The next dimension as one value in `[0, 1)`, stratified in 1D over
-    /// the pixel's samples where the sampler allows (see its `draw_1d`).
+    /// The next draw as one value in `[0, 1)`, stratified in 1D over the
+    /// pixel's samples where the sampler allows (see its `draw_1d`).
     #[inline]
     pub fn next_1d(&mut self) -> f32 {
         let draw = self.advance();
         self.sampler.draw_1d(draw)
     }
 
-    /// The next dimension as a point in `[0, 1)^2`.
+    /// The next draw as a point in `[0, 1)^2`.
     #[inline]
     pub fn next_2d(&mut self) -> Vec2 {
         let draw = self.advance();
         self.sampler.draw_2d(draw)
     }
 
-    /// The next dimension as a point in `[0, 1)^3` (one draw: the counter
+    /// The next draw as a point in `[0, 1)^3` (one draw: the counter
     /// advances by one whatever the width).
     #[inline]
     pub fn next_3d(&mut self) -> Vec3 {
@@ -169,7 +188,7 @@ impl<S: PixelSampler> Domain<S> {
         self.sampler.draw_3d(draw)
     }
 
-    /// The next dimension as a point in `[0, 1)^4`: for the sequences one
+    /// The next draw as a point in `[0, 1)^4`: for the sequences one
     /// point of a 4D Owen-scrambled Sobol' set, for the others two padded
     /// pairs (see each sampler's `draw_4d`).
     #[inline]
@@ -179,7 +198,7 @@ impl<S: PixelSampler> Domain<S> {
     }
 
     /// The child domain keyed `key`: same pixel and index, a key derived
-    /// from this domain's key alone, dimension 0.
+    /// from this domain's key alone, draw 0.
     #[inline]
     #[must_use]
     pub fn branch(&self, key: u32) -> Self
@@ -187,8 +206,8 @@ impl<S: PixelSampler> Domain<S> {
         S: Copy,
     {
         Self {
-            key: hash_combine(self.key, key),
-            dimension: 0,
+            key: child_key(self.key, salt::BRANCH, key),
+            draws: 0,
             ..*self
         }
     }
@@ -207,15 +226,12 @@ impl<S: PixelSampler> Domain<S> {
         let child = self.index.wrapping_mul(count).wrapping_add(j);
         let (index, key) = self
             .sampler
-            .locate(child, hash_combine(self.key, key ^ SPLIT_SALT));
+            .locate(child, child_key(self.key, salt::SPLIT, key));
         Self {
-            index,
             key,
-            dimension: 0,
+            index,
+            draws: 0,
             ..*self
         }
     }
 }
-
-/// Keeps `split(k, ..)` and `branch(k)` apart (fraction bits of sqrt(3)).
-const SPLIT_SALT: u32 = 0xbb67_ae85;

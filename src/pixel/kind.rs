@@ -221,14 +221,6 @@ impl PixelSampler for AnyPixelSampler {
         }
     }
     #[inline]
-    fn sample_pixel(&self, pixel: [u32; 2], index: u32, dimension: u32) -> Vec2 {
-        match self {
-            AnyPixelSampler::Padded(s) => s.sample_pixel(pixel, index, dimension),
-            AnyPixelSampler::ZSobol(s) => s.sample_pixel(pixel, index, dimension),
-            AnyPixelSampler::BlueNoise(s) => s.sample_pixel(pixel, index, dimension),
-        }
-    }
-    #[inline]
     fn root(&self, pixel: [u32; 2]) -> Root {
         match self {
             AnyPixelSampler::Padded(s) => s.root(pixel),
@@ -237,7 +229,7 @@ impl PixelSampler for AnyPixelSampler {
         }
     }
     #[inline]
-    fn locate(&self, index: u32, key: u32) -> (u32, u32) {
+    fn locate(&self, index: u32, key: u64) -> (u32, u64) {
         match self {
             AnyPixelSampler::Padded(s) => s.locate(index, key),
             AnyPixelSampler::ZSobol(s) => s.locate(index, key),

@@ -1,8 +1,8 @@
 //! Samples addressed the way a renderer asks for them: by pixel, sample
-//! index and dimension, either by pure O(1) access
-//! ([`PixelSampler::sample_pixel`]) or through an owned per-sample state,
-//! [`Domain`], that hands out draws of one to four dimensions and derives
-//! keyed child domains.
+//! index and draw, through an owned per-sample state, [`Domain`], that
+//! hands out draws of one to four dimensions and derives keyed child
+//! domains; [`PixelSampler::sample_pixel`] is a domain's `d`-th 2D draw in
+//! O(1).
 
 mod blue_noise;
 mod domain;
@@ -16,22 +16,26 @@ pub use blue_noise::BlueNoise;
 pub use domain::Domain;
 pub(crate) use kind::ALIASES_TEXT;
 pub use kind::{AnyPixelSampler, PixelSamplerKind};
-pub use padded::{DomainSampler, Padded};
+pub use padded::Padded;
 pub use zsobol::ZSobol;
 
-use crate::primitives::hash_u32;
+use crate::primitives::{mix64, salt};
+use crate::traits::second_stream;
 
-/// Sample positions for a whole image: sample `index` of pixel `pixel`,
-/// either one dimension pair at a time ([`sample_pixel`](Self::sample_pixel))
-/// or as a [`Domain`] ([`start`](Self::start)) that draws 1D to 4D values.
+/// Sample positions for a whole image: sample `index` of pixel `pixel` as
+/// a [`Domain`] ([`start`](Self::start)) that draws 1D to 4D values.
 ///
 /// # Properties
 ///
-/// - `sample_pixel` and every draw are pure functions of the sampler, the
-///   pixel, the index and the domain's keys: the same arguments give the
+/// - Every draw is a pure function of the sampler, the pixel, the index,
+///   the domain's key and its draw counter: the same arguments give the
 ///   same values on every thread, machine and run, so any tile order
 ///   renders the same image. Implementors are `Send + Sync`.
 /// - Every coordinate is in `[0, 1)`.
+/// - One value per (pixel, index, draw):
+///   [`sample_pixel(pixel, index, pair)`](Self::sample_pixel) is the
+///   `pair`-th [`next_2d`](Domain::next_2d) of `start(pixel, index)`, by
+///   definition (a provided method, not a second formula).
 ///
 /// # Edges, the same for every pixel sampler, debug and release
 ///
@@ -40,27 +44,25 @@ use crate::primitives::hash_u32;
 ///   the sampler's guarantees. Fixed-size samplers (the grid family,
 ///   [`ZSobol`]) key each pass's sets by `p` (independent sets); the
 ///   progressive sequences ([`Sobol`](crate::Sobol), [`Pmj02`](crate::Pmj02),
-///   [`Halton`](crate::Halton)) go on along their sequence, so every
-///   prefix `0 .. 2^k` stays a net. Nothing panics, nothing repeats.
+///   [`Halton`](crate::Halton), [`BlueNoise`]) go on along their sequence,
+///   so every prefix `0 .. 2^k` stays a net. Nothing panics, nothing
+///   repeats.
 /// - **Progressive samplers have no count.** `samples_per_pixel()` is
 ///   `None` for an unbounded sequence (`Padded::new(Sobol::unbounded(), _)`):
 ///   ask for indices, any `u32`.
-/// - **Pixels outside a resolution.** [`Padded`] has no resolution: every
-///   `[u32; 2]` is a distinct pixel. [`ZSobol`] maps a pixel outside its
-///   film onto the film (coordinates modulo the width and height) with the
-///   scramble keyed by the tile it fell in, so it gets a full, unrelated
-///   set.
+/// - **Pixels outside a resolution.** [`Padded`] and [`BlueNoise`] have no
+///   resolution: every `[u32; 2]` is a distinct pixel. [`ZSobol`] maps a
+///   pixel outside its film onto the film (coordinates modulo the width
+///   and height) with the scrambles keyed by the tile it fell in, so it
+///   gets a full, unrelated set.
 ///
 /// # Implementing
 ///
-/// Only [`samples_per_pixel`](Self::samples_per_pixel) and
-/// [`sample_pixel`](Self::sample_pixel) are required: the provided draw
-/// methods then call `sample_pixel(pixel, index, stream)` with a
-/// per-draw hash `stream` as the dimension, so a new pixel sampler works
-/// with [`Domain`], branches and splits at once. Override
-/// [`root`](Self::root) and the `draw_*` methods to make draws cheaper
-/// (the pixel hashed once per sample instead of per draw) or better
-/// (stratified 1D draws, true 4D sets), as [`Padded`] and [`ZSobol`] do.
+/// Three methods are required: [`samples_per_pixel`](Self::samples_per_pixel),
+/// [`root`](Self::root) (what `start` computes once per pixel sample) and
+/// [`draw_2d`](Self::draw_2d). The other draws have padded defaults;
+/// override them to make draws better (stratified 1D draws, true 4D sets),
+/// as [`Padded`], [`ZSobol`] and [`BlueNoise`] do.
 ///
 /// # Examples
 ///
@@ -117,35 +119,17 @@ pub trait PixelSampler: Send + Sync {
     /// progressive sampler, which takes any index.
     fn samples_per_pixel(&self) -> Option<u32>;
 
-    /// Sample `index` of pixel `pixel` (`[x, y]`) in dimension pair
-    /// `dimension`, in O(1). Out-of-range arguments follow the edge rules
-    /// above.
-    fn sample_pixel(&self, pixel: [u32; 2], index: u32, dimension: u32) -> Vec2;
-
     /// What [`start`](Self::start) computes once per pixel sample: the
     /// root key of the domain tree and the sampler's own pixel state.
-    ///
-    /// The default keys every pixel alike (key 0, state 0), for samplers
-    /// whose `sample_pixel` mixes the pixel in itself.
-    #[inline]
-    fn root(&self, pixel: [u32; 2]) -> Root {
-        let _ = pixel;
-        Root { key: 0, pixel: 0 }
-    }
+    fn root(&self, pixel: [u32; 2]) -> Root;
 
     /// Where sample `index` of a domain keyed `key` lives, after the
     /// index-beyond-the-count rule: `(index in the set, key of the set)`.
     ///
-    /// The default is the fixed-size rule: pass `index / n` keys an
-    /// independent set. Progressive samplers return `(index, key)`.
+    /// The default is the progressive rule: `(index, key)`.
     #[inline]
-    fn locate(&self, index: u32, key: u32) -> (u32, u32) {
-        match self.samples_per_pixel() {
-            Some(n) if index >= n && n > 0 => {
-                (index % n, crate::primitives::hash_combine(key, index / n))
-            }
-            _ => (index, key),
-        }
+    fn locate(&self, index: u32, key: u64) -> (u32, u64) {
+        (index, key)
     }
 
     /// One value in `[0, 1)` for `draw`. The default is the first
@@ -155,14 +139,11 @@ pub trait PixelSampler: Send + Sync {
         self.draw_2d(draw).x
     }
 
-    /// One point in `[0, 1)^2` for `draw`. The default is
-    /// `sample_pixel(draw.pixel, draw.index, draw.stream)`.
-    #[inline]
-    fn draw_2d(&self, draw: Draw) -> Vec2 {
-        self.sample_pixel(draw.pixel, draw.index, draw.stream)
-    }
+    /// One point in `[0, 1)^2` for `draw`.
+    fn draw_2d(&self, draw: Draw) -> Vec2;
 
-    /// One point in `[0, 1)^3`. The default pads a pair and a 1D draw.
+    /// One point in `[0, 1)^3`. The default pads a pair and a 1D draw of
+    /// [`Draw::second`].
     #[inline]
     fn draw_3d(&self, draw: Draw) -> Vec3 {
         let a = self.draw_2d(draw);
@@ -177,115 +158,37 @@ pub trait PixelSampler: Send + Sync {
         Vec4::new(a.x, a.y, b.x, b.y)
     }
 
-    /// A [`PixelCursor`] at sample `index` of `pixel`: `sample_pixel`'s
-    /// dimension pairs 0, 1, 2, ... in order.
+    /// Draw `pair` of sample `index` of `pixel` as a point in `[0, 1)^2`,
+    /// in O(1): exactly the `pair`-th [`Domain::next_2d`] of
+    /// `start(pixel, index)` (after `pair` draws of any width), for code
+    /// written against pbrt-v4's `Get2D` or a per-pair pattern.
+    ///
+    /// ```
+    /// use wellspread::{Padded, PixelSampler, Sobol};
+    /// let pixels = Padded::new(Sobol::new(16)?, 0);
+    /// let mut d = pixels.start([3, 4], 5);
+    /// let film = d.next_2d();
+    /// let lens = d.next_2d();
+    /// assert_eq!(film, pixels.sample_pixel([3, 4], 5, 0));
+    /// assert_eq!(lens, pixels.sample_pixel([3, 4], 5, 1));
+    /// # Ok::<(), wellspread::Error>(())
+    /// ```
     #[inline]
-    fn cursor(&self, pixel: [u32; 2], index: u32) -> PixelCursor<'_, Self>
-    where
-        Self: Sized,
-    {
-        PixelCursor::new(self, pixel, index)
+    fn sample_pixel(&self, pixel: [u32; 2], index: u32, pair: u32) -> Vec2 {
+        let root = self.root(pixel);
+        let (index, key) = self.locate(index, root.key);
+        self.draw_2d(Draw::new(key, pair, index, root.pixel_state))
     }
 
-    /// The domain of sample `index` of `pixel`: the pixel is hashed here,
-    /// once; every draw after costs one hash and the sampler's kernel.
+    /// The domain of sample `index` of `pixel`: [`root`](Self::root) and
+    /// [`locate`](Self::locate) run here, once; each draw after costs one
+    /// [`mix64`] and the sampler's kernel.
     #[inline(always)]
     fn start(&self, pixel: [u32; 2], index: u32) -> Domain<Self>
     where
         Self: Sized + Copy,
     {
         Domain::start(*self, pixel, index)
-    }
-}
-
-/// The dimension pairs of [`PixelSampler::sample_pixel`] in order, for
-/// code written against pbrt-v4's `StartPixelSample` / `Get2D`. A renderer
-/// should prefer [`Domain`]: it owns its sampler, hashes the pixel once,
-/// draws 1D to 4D values and branches by key.
-///
-/// A cursor is a thin view of `sample_pixel`: the `k`-th
-/// call to [`next_2d`](Self::next_2d) returns
-/// `sample_pixel(pixel, index, k)`, so a renderer that asks for its
-/// dimension pairs in a fixed order needs no bookkeeping. It borrows the
-/// sampler and is cheap to make: one per pixel sample and thread.
-///
-/// ```
-/// use wellspread::{Padded, PixelSampler, Sobol};
-/// let pixels = Padded::new(Sobol::new(4)?, 0);
-/// let mut cursor = pixels.cursor([10, 20], 3);
-/// let film = cursor.next_2d();
-/// let lens = cursor.next_2d();
-/// assert_eq!(film, pixels.sample_pixel([10, 20], 3, 0));
-/// assert_eq!(lens, pixels.sample_pixel([10, 20], 3, 1));
-/// assert_eq!(cursor.dimension(), 2);
-/// # Ok::<(), wellspread::Error>(())
-/// ```
-#[derive(Clone, Debug)]
-pub struct PixelCursor<'a, P: ?Sized> {
-    sampler: &'a P,
-    pixel: [u32; 2],
-    index: u32,
-    dimension: u32,
-}
-
-impl<'a, P: PixelSampler + ?Sized> PixelCursor<'a, P> {
-    /// A cursor at sample `index` of `pixel`, dimension pair 0.
-    #[inline]
-    pub fn new(sampler: &'a P, pixel: [u32; 2], index: u32) -> Self {
-        Self {
-            sampler,
-            pixel,
-            index,
-            dimension: 0,
-        }
-    }
-
-    /// Moves to sample `index` of `pixel` and back to dimension pair 0.
-    #[inline]
-    pub fn start_pixel_sample(&mut self, pixel: [u32; 2], index: u32) {
-        self.pixel = pixel;
-        self.index = index;
-        self.dimension = 0;
-    }
-
-    /// The next dimension pair of the current pixel sample.
-    ///
-    /// A release build wraps the dimension counter after 2^32 calls (a
-    /// debug build panics on the overflow); no renderer asks for that many.
-    #[inline]
-    pub fn next_2d(&mut self) -> Vec2 {
-        let point = self
-            .sampler
-            .sample_pixel(self.pixel, self.index, self.dimension);
-        self.dimension += 1;
-        point
-    }
-
-    /// The next dimension pair's first coordinate; the pair's second
-    /// coordinate goes unused ([`Domain::next_1d`] wastes nothing and is
-    /// stratified in 1D).
-    #[inline]
-    pub fn next_1d(&mut self) -> f32 {
-        self.next_2d().x
-    }
-
-    /// The dimension pair the next call to [`next_2d`](Self::next_2d)
-    /// returns.
-    #[inline]
-    pub fn dimension(&self) -> u32 {
-        self.dimension
-    }
-
-    /// The current pixel.
-    #[inline]
-    pub fn pixel(&self) -> [u32; 2] {
-        self.pixel
-    }
-
-    /// The current sample index.
-    #[inline]
-    pub fn index(&self) -> u32 {
-        self.index
     }
 }
 
@@ -300,15 +203,11 @@ impl<T: PixelSampler + ?Sized> PixelSampler for &T {
         (**self).samples_per_pixel()
     }
     #[inline]
-    fn sample_pixel(&self, pixel: [u32; 2], index: u32, dimension: u32) -> Vec2 {
-        (**self).sample_pixel(pixel, index, dimension)
-    }
-    #[inline]
     fn root(&self, pixel: [u32; 2]) -> Root {
         (**self).root(pixel)
     }
     #[inline]
-    fn locate(&self, index: u32, key: u32) -> (u32, u32) {
+    fn locate(&self, index: u32, key: u64) -> (u32, u64) {
         (**self).locate(index, key)
     }
     #[inline]
@@ -333,39 +232,49 @@ impl<T: PixelSampler + ?Sized> PixelSampler for &T {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Root {
     /// The root key: [`Domain::branch`] and every draw's `stream` derive
-    /// from it. A sampler whose draws depend on the pixel through the key
-    /// (as [`Padded`]) hashes the pixel and frame into it.
-    pub key: u32,
+    /// from it. [`Padded`] packs the pixel and the frame's key into it
+    /// (no hash: each draw mixes the key).
+    pub key: u64,
     /// Whatever else the sampler needs per pixel (for [`ZSobol`], the
-    /// pixel's Morton index shifted by `log2(spp)`), handed back in every
-    /// [`Draw`].
-    pub pixel: u32,
+    /// pixel's Morton block; for [`BlueNoise`], its Morton code), handed
+    /// back in every [`Draw`].
+    pub pixel_state: u32,
 }
 
 /// What one draw of a [`Domain`] hands its sampler.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Draw {
-    /// The pixel, `[x, y]`, as passed to [`PixelSampler::start`].
-    pub pixel: [u32; 2],
-    /// The sampler's pixel state, [`Root::pixel`].
-    pub pixel_state: u32,
     /// The sample index within its set, after [`PixelSampler::locate`].
     pub index: u32,
-    /// A well-mixed 32-bit value that picks this draw's pattern: a hash of
-    /// the domain's key and its dimension counter, so it is the same for
-    /// every sample index of a pixel (as a pattern must be) and unrelated
-    /// between dimensions, keys and branches.
-    pub stream: u32,
+    /// The sampler's pixel state, [`Root::pixel_state`].
+    pub pixel_state: u32,
+    /// A well-mixed 64-bit value that picks this draw's pattern: [`mix64`]
+    /// of the domain's key plus the draw counter times an odd Weyl
+    /// increment, so it is the same for every sample index of a pixel (as
+    /// a pattern must be) and unrelated between draws, keys and branches.
+    pub stream: u64,
 }
 
 impl Draw {
-    /// The draw with an unrelated `stream` (one hash), for samplers that
-    /// pad a 3D or 4D draw from two patterns.
+    /// Draw number `draw` of a domain keyed `key`, at sample `index`: the
+    /// one formula [`Domain`] and [`PixelSampler::sample_pixel`] share.
+    #[inline(always)]
+    #[must_use]
+    pub const fn new(key: u64, draw: u32, index: u32, pixel_state: u32) -> Self {
+        Self {
+            index,
+            pixel_state,
+            stream: mix64(key.wrapping_add((draw as u64).wrapping_mul(salt::DRAW_WEYL))),
+        }
+    }
+
+    /// The draw with an unrelated `stream` (one [`mix64`]), for samplers
+    /// that pad a 3D or 4D draw from two patterns.
     #[inline]
     #[must_use]
     pub const fn second(self) -> Self {
         Self {
-            stream: hash_u32(self.stream ^ 0x5bd1_e995),
+            stream: second_stream(self.stream),
             ..self
         }
     }
@@ -398,6 +307,6 @@ mod tests {
         assert_send_sync::<Domain<Padded<Sobol>>>();
         assert_send_sync::<Domain<AnyPixelSampler>>();
         assert_send_sync::<Domain<&'static dyn PixelSampler>>();
-        assert!(core::mem::size_of::<Domain<Padded<Sobol>>>() <= 40);
+        assert!(core::mem::size_of::<Domain<Padded<Sobol>>>() <= 48);
     }
 }

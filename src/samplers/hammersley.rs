@@ -1,11 +1,12 @@
 use glam::Vec2;
 
 use crate::primitives::{
-    InvariantDivisor, MAX_STRATA, hash_u32, owen_scramble_reversed, rand_u32, salt, u32_to_unit_f32,
+    InvariantDivisor, MAX_STRATA, hash_u32, owen_scramble_reversed, permute, rand_u32, salt,
+    u32_to_unit_f32,
 };
 use crate::simd::{self, Isa, PointKernel, Pointwise};
 use crate::traits::{FillOn, Sampler2D, check_fill_len, debug_check_index};
-use crate::{Error, SamplerKind};
+use crate::{DomainSampler, Error, SamplerKind};
 
 /// The Hammersley set `(i / n, phi_2(i))`, randomised: scrambled.
 ///
@@ -158,6 +159,19 @@ impl Sampler2D for Hammersley {
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
         self.fill_on(Isa::best(), pattern, out);
+    }
+}
+
+/// A domain's 2D draws read the index through a keyed permutation of the
+/// set first: Hammersley visits its points in the same order for every
+/// pattern, so unshuffled draws would pair their samples. 1D draws are
+/// the default stratified ones, 3D and 4D padded.
+impl DomainSampler for Hammersley {
+    #[inline]
+    fn domain_2d(&self, index: u32, stream: u64) -> Vec2 {
+        let n = self.len();
+        let index = if index < n { index } else { index % n };
+        self.sample(permute(index, n, (stream >> 32) as u32), stream as u32)
     }
 }
 

@@ -5,18 +5,19 @@
 use core::fmt;
 use core::str::FromStr;
 
-use glam::Vec2;
+use glam::{Vec2, Vec3, Vec4};
 
 use super::{
     BlueMultiJittered, CorrelatedMultiJittered, Halton, Hammersley, Jittered, MultiJittered,
     NRooks, Pmj02, Random, Regular, Sobol,
 };
 use crate::simd::Isa;
-use crate::traits::{FillOn, Sequence2D};
+use crate::traits::{DomainSampler, FillOn, Sequence2D};
 use crate::{Error, Sampler2D};
 
 /// Declares the sampler list once: the kind enum, its names, the dispatching
-/// enum and its `Sampler2D` impl all come from this one table.
+/// enum and its `Sampler2D` and `DomainSampler` impls all come from this
+/// one table.
 macro_rules! sampler_kinds {
     ($($variant:ident => $name:literal,)*) => {
         /// The kinds of [`Sampler2D`] wellspread offers, named as the tools
@@ -117,6 +118,43 @@ macro_rules! sampler_kinds {
             fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
                 match self {
                     $(AnySampler::$variant(s) => s.fill_on(isa, pattern, out),)*
+                }
+            }
+        }
+
+        impl DomainSampler for AnySampler {
+            #[inline]
+            fn locate(&self, index: u32, key: u64) -> (u32, u64) {
+                match self {
+                    $(AnySampler::$variant(s) => s.locate(index, key),)*
+                }
+            }
+
+            #[inline]
+            fn domain_1d(&self, index: u32, stream: u64) -> f32 {
+                match self {
+                    $(AnySampler::$variant(s) => s.domain_1d(index, stream),)*
+                }
+            }
+
+            #[inline]
+            fn domain_2d(&self, index: u32, stream: u64) -> Vec2 {
+                match self {
+                    $(AnySampler::$variant(s) => s.domain_2d(index, stream),)*
+                }
+            }
+
+            #[inline]
+            fn domain_3d(&self, index: u32, stream: u64) -> Vec3 {
+                match self {
+                    $(AnySampler::$variant(s) => s.domain_3d(index, stream),)*
+                }
+            }
+
+            #[inline]
+            fn domain_4d(&self, index: u32, stream: u64) -> Vec4 {
+                match self {
+                    $(AnySampler::$variant(s) => s.domain_4d(index, stream),)*
                 }
             }
         }

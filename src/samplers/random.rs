@@ -1,9 +1,9 @@
 use glam::Vec2;
 
-use crate::Error;
 use crate::primitives::{hash_combine, hash_u32, salt, u32_to_unit_f32};
 use crate::simd::{self, Isa, PointKernel, Pointwise};
 use crate::traits::{FillOn, Sampler2D, check_fill_len, debug_check_index};
+use crate::{DomainSampler, Error};
 
 /// Independent uniform points: the baseline every other sampler must beat.
 ///
@@ -101,6 +101,32 @@ impl Sampler2D for Random {
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
         self.fill_on(Isa::best(), pattern, out);
+    }
+}
+
+/// A domain's draws are independent uniform values, cheaper than
+/// `sample`'s (and other values): [`locate`](DomainSampler::locate) folds
+/// the sample index into the key once per domain, so each draw's
+/// well-mixed stream is already unique to the sample and its two halves
+/// are the two coordinates. 3D and 4D draws pad.
+impl DomainSampler for Random {
+    #[inline]
+    fn locate(&self, index: u32, key: u64) -> (u32, u64) {
+        (
+            index,
+            key ^ u64::from(index).wrapping_mul(salt::RANDOM_INDEX),
+        )
+    }
+    #[inline]
+    fn domain_1d(&self, _index: u32, stream: u64) -> f32 {
+        u32_to_unit_f32((stream >> 32) as u32)
+    }
+    #[inline]
+    fn domain_2d(&self, _index: u32, stream: u64) -> Vec2 {
+        Vec2::new(
+            u32_to_unit_f32((stream >> 32) as u32),
+            u32_to_unit_f32(stream as u32),
+        )
     }
 }
 

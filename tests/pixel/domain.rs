@@ -4,8 +4,8 @@ use proptest::prelude::*;
 use wellspread::glam::{Vec2, Vec4};
 use wellspread::metrics::{is_net_base2, net_t_value};
 use wellspread::{
-    AnyPixelSampler, Domain, Error, Padded, PixelSampler, PixelSamplerKind, SamplerKind, Sobol,
-    ZSobol,
+    AnyPixelSampler, Domain, Draw, Error, Padded, PixelSampler, PixelSamplerKind, Root,
+    SamplerKind, Sobol, ZSobol,
 };
 
 /// Every pixel sampler at `spp` on a 64 x 64 film, frame `frame`.
@@ -180,8 +180,10 @@ proptest! {
         }
     }
 
-    /// Indices at or beyond the count: every pass is a complete set (1D
-    /// strata), different from pass 0; the same in debug and release.
+    /// Indices at or beyond the count: for fixed-size samplers every pass
+    /// is a complete set (1D strata), for the sequences the power-of-two
+    /// prefix holding it is; either way different from pass 0, the same in
+    /// debug and release.
     #[test]
     fn passes_beyond_the_count_are_complete_sets(
         pass in 1u32..1000, frame in any::<u32>(), x in 0u32..64, y in 0u32..64,
@@ -195,8 +197,17 @@ proptest! {
                 (0..spp).map(|i| sampler.start([x, y], p * spp + i).next_1d()).collect()
             };
             let (first, later) = (values(0), values(pass));
-            prop_assert!(distinct_strata(&later), "{kind} pass {pass}");
-            prop_assert_ne!(first, later, "{} pass {}", kind, pass);
+            prop_assert_ne!(&first, &later, "{} pass {}", kind, pass);
+            if needs_power_of_two(kind) && kind != PixelSamplerKind::ZSobol {
+                // A sequence goes on: every power-of-two prefix is a net,
+                // the one holding this pass included.
+                let end = ((pass + 1) * spp).next_power_of_two();
+                let prefix: Vec<f32> =
+                    (0..end).map(|i| sampler.start([x, y], i).next_1d()).collect();
+                prop_assert!(distinct_strata(&prefix), "{kind} prefix of {end}");
+            } else {
+                prop_assert!(distinct_strata(&later), "{kind} pass {pass}");
+            }
             let pair = sampler.sample_pixel([x, y], pass * spp + 3, 1);
             prop_assert!(pair.x < 1.0 && pair.y < 1.0);
         }
@@ -545,18 +556,21 @@ fn consecutive_draws_are_independent() {
     }
 }
 
-/// A pixel sampler with only the two required methods works in a Domain:
-/// the provided draws route through sample_pixel with the draw's stream.
+/// A pixel sampler with only the three required methods works in a
+/// Domain: the provided draws route through its draw_2d.
 #[test]
-fn a_new_pixel_sampler_plugs_in_with_two_methods() {
+fn a_new_pixel_sampler_plugs_in_with_three_methods() {
     #[derive(Clone, Copy)]
     struct Mine(Padded<Sobol>);
     impl PixelSampler for Mine {
         fn samples_per_pixel(&self) -> Option<u32> {
             self.0.samples_per_pixel()
         }
-        fn sample_pixel(&self, pixel: [u32; 2], index: u32, dimension: u32) -> Vec2 {
-            self.0.sample_pixel(pixel, index, dimension)
+        fn root(&self, pixel: [u32; 2]) -> Root {
+            self.0.root(pixel)
+        }
+        fn draw_2d(&self, draw: Draw) -> Vec2 {
+            self.0.draw_2d(draw)
         }
     }
     let mine = Mine(Padded::new(Sobol::new(16).unwrap(), 0));
@@ -651,5 +665,115 @@ fn split_children_of_fixed_size_samplers_are_complete_sets() {
         for set in children.chunks(spp as usize) {
             assert!(distinct_strata(set), "{kind}: {set:?}");
         }
+    }
+}
+
+/// One value per (pixel, index, draw): `sample_pixel(pixel, index, d)` is
+/// the `d`-th draw of `start(pixel, index)` taken as a 2D draw, whatever
+/// the widths of the draws before it, for every pixel sampler, through the
+/// enum, a trait object and at the edges.
+#[test]
+fn sample_pixel_is_the_domain_draw_for_every_kind() {
+    for frame in [0, 7, u32::MAX] {
+        for (kind, sampler) in every_kind(16, frame) {
+            let dynamic: &dyn PixelSampler = &sampler;
+            for (pixel, index) in [
+                ([0, 0], 0),
+                ([5, 9], 3),
+                ([63, 1], 15),
+                ([1000, 70_000], 40),
+                ([u32::MAX, u32::MAX], u32::MAX),
+            ] {
+                for pair in 0..6 {
+                    let mut d = sampler.start(pixel, index);
+                    for k in 0..pair {
+                        match k % 3 {
+                            0 => drop(d.next_4d()),
+                            1 => drop(d.next_1d()),
+                            _ => drop(d.next_3d()),
+                        }
+                    }
+                    let drawn = d.next_2d();
+                    assert_eq!(
+                        drawn,
+                        sampler.sample_pixel(pixel, index, pair),
+                        "{kind}, frame {frame}, pixel {pixel:?}, index {index}, pair {pair}"
+                    );
+                    assert_eq!(drawn, dynamic.sample_pixel(pixel, index, pair));
+                }
+            }
+        }
+    }
+    let padded = Padded::new(Sobol::new(16).unwrap(), 3);
+    let mut d = padded.start([3, 4], 5);
+    d.next_1d();
+    assert_eq!(d.next_2d(), padded.sample_pixel([3, 4], 5, 1));
+}
+
+/// `Domain` stays small and cheap to copy: at most 48 bytes for the
+/// sequences, random, Hammersley, ZSobol and BlueNoise. The grid family
+/// carries three 16-byte reciprocals (and blue multi-jitter its lattice),
+/// so its domains, and `AnyPixelSampler`'s, are larger: their sizes are
+/// pinned here so that they do not grow unnoticed (`docs/performance.md`
+/// says what getting them under 48 bytes would take).
+#[test]
+fn domain_sizes() {
+    use core::mem::size_of;
+    use wellspread::{
+        AnySampler, BlueMultiJittered, BlueNoise, CorrelatedMultiJittered, Halton, Hammersley,
+        Jittered, MultiJittered, NRooks, Pmj02, Random, Regular,
+    };
+    let small = [
+        ("Padded<Sobol>", size_of::<Domain<Padded<Sobol>>>()),
+        ("Padded<Pmj02>", size_of::<Domain<Padded<Pmj02>>>()),
+        ("Padded<Halton>", size_of::<Domain<Padded<Halton>>>()),
+        ("Padded<Random>", size_of::<Domain<Padded<Random>>>()),
+        (
+            "Padded<Hammersley>",
+            size_of::<Domain<Padded<Hammersley>>>(),
+        ),
+        ("ZSobol", size_of::<Domain<ZSobol>>()),
+        ("BlueNoise", size_of::<Domain<BlueNoise>>()),
+        ("&dyn PixelSampler", size_of::<Domain<&dyn PixelSampler>>()),
+    ];
+    for (name, size) in small {
+        assert!(size <= 48, "Domain<{name}> is {size} bytes");
+    }
+    assert_eq!(size_of::<Domain<Padded<Sobol>>>(), 32);
+    let pinned = [
+        ("Padded<Regular>", size_of::<Domain<Padded<Regular>>>(), 80),
+        (
+            "Padded<Jittered>",
+            size_of::<Domain<Padded<Jittered>>>(),
+            80,
+        ),
+        ("Padded<NRooks>", size_of::<Domain<Padded<NRooks>>>(), 80),
+        (
+            "Padded<MultiJittered>",
+            size_of::<Domain<Padded<MultiJittered>>>(),
+            80,
+        ),
+        (
+            "Padded<CorrelatedMultiJittered>",
+            size_of::<Domain<Padded<CorrelatedMultiJittered>>>(),
+            80,
+        ),
+        (
+            "Padded<BlueMultiJittered>",
+            size_of::<Domain<Padded<BlueMultiJittered>>>(),
+            104,
+        ),
+        (
+            "Padded<AnySampler>",
+            size_of::<Domain<Padded<AnySampler>>>(),
+            112,
+        ),
+        ("AnyPixelSampler", size_of::<Domain<AnyPixelSampler>>(), 112),
+    ];
+    for (name, size, pin) in pinned {
+        assert!(
+            size <= pin,
+            "Domain<{name}> grew to {size} bytes (was {pin})"
+        );
     }
 }

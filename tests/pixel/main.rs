@@ -3,10 +3,11 @@
 //! decorrelated; `domain` checks the `Domain` draws, branches and splits.
 
 mod domain;
+mod independence;
 
 use wellspread::glam::Vec2;
 use wellspread::metrics::is_net_base2;
-use wellspread::{Error, Padded, PixelSampler, Sobol, ZSobol};
+use wellspread::{Draw, Error, Padded, PixelSampler, Root, Sobol, ZSobol};
 
 #[test]
 fn zsobol_pixels_are_nets_in_every_dimension_pair() {
@@ -175,7 +176,15 @@ impl<P: PixelSampler> PixelSampler for Reused<P> {
         self.0.samples_per_pixel()
     }
 
-    fn sample_pixel(&self, pixel: [u32; 2], index: u32, _dimension: u32) -> Vec2 {
+    fn root(&self, pixel: [u32; 2]) -> Root {
+        self.0.root(pixel)
+    }
+
+    fn draw_2d(&self, draw: Draw) -> Vec2 {
+        self.0.draw_2d(draw)
+    }
+
+    fn sample_pixel(&self, pixel: [u32; 2], index: u32, _pair: u32) -> Vec2 {
         self.0.sample_pixel(pixel, index, 0)
     }
 }

@@ -3,7 +3,7 @@ use glam::Vec2;
 use super::{Grid, GridPattern, Jitter, SMALL_TABLE, fill_grid, small_table};
 use crate::primitives::{MAX_STRATA, Permutation, derived_key, hash_u32, salt};
 use crate::simd::Isa;
-use crate::traits::{FillOn, Sampler2D};
+use crate::traits::{DomainSampler, FillOn, Sampler2D};
 use crate::{Error, SamplerKind};
 
 /// Correlated multi-jittered sampling (Kensler 2013): multi-jitter in which
@@ -176,6 +176,10 @@ impl CorrelatedMultiJittered {
         }
     }
 }
+
+/// A domain's draws: 2D the sampler's own set, 1D stratified, 3D and 4D
+/// padded ([`DomainSampler`]'s defaults).
+impl DomainSampler for CorrelatedMultiJittered {}
 
 impl FillOn for CorrelatedMultiJittered {
     fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {

@@ -3,7 +3,7 @@ use glam::Vec2;
 use super::{CellOffset, Grid, GridPattern, Jitter, fill_grid};
 use crate::primitives::{Permutation, hash_u32};
 use crate::simd::Isa;
-use crate::traits::{FillOn, Sampler2D};
+use crate::traits::{DomainSampler, FillOn, Sampler2D};
 use crate::{Error, SamplerKind};
 
 /// One uniformly random point in each cell of a `columns x rows` grid
@@ -123,6 +123,10 @@ impl Sampler2D for Jittered {
         self.fill_on(Isa::best(), pattern, out);
     }
 }
+
+/// A domain's draws: 2D the sampler's own set, 1D stratified, 3D and 4D
+/// padded ([`DomainSampler`]'s defaults).
+impl DomainSampler for Jittered {}
 
 impl FillOn for Jittered {
     fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {

@@ -3,7 +3,7 @@ use glam::Vec2;
 use super::{Grid, GridPattern, Jitter, SMALL_TABLE, fill_grid};
 use crate::primitives::{MAX_STRATA, Permutation, hash_u32, salt};
 use crate::simd::Isa;
-use crate::traits::{FillOn, Sampler2D};
+use crate::traits::{DomainSampler, FillOn, Sampler2D};
 use crate::{Error, SamplerKind};
 
 /// Multi-jittered sampling: jittered on a coarse `columns x rows` grid and
@@ -239,6 +239,10 @@ impl MultiJittered {
         }
     }
 }
+
+/// A domain's draws: 2D the sampler's own set, 1D stratified, 3D and 4D
+/// padded ([`DomainSampler`]'s defaults).
+impl DomainSampler for MultiJittered {}
 
 impl FillOn for MultiJittered {
     fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {

@@ -4,7 +4,7 @@ use super::jittered::JitteredPattern;
 use super::{Centre, Grid, GridPattern, fill_grid};
 use crate::primitives::hash_u32;
 use crate::simd::Isa;
-use crate::traits::{FillOn, Sampler2D};
+use crate::traits::{DomainSampler, FillOn, Sampler2D, stratified_1d};
 use crate::{Error, SamplerKind};
 
 /// Cell centres of a `columns x rows` grid: the deterministic baseline that
@@ -108,6 +108,15 @@ impl Sampler2D for Regular {
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
         self.fill_on(Isa::best(), pattern, out);
+    }
+}
+
+/// A domain's draws: 2D the sampler's own grid, 1D the cell centres of
+/// `n` strata in a keyed order (no jitter), 3D and 4D padded.
+impl DomainSampler for Regular {
+    #[inline]
+    fn domain_1d(&self, index: u32, stream: u64) -> f32 {
+        stratified_1d(index, self.len(), stream, false)
     }
 }
 

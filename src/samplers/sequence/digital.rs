@@ -1,12 +1,19 @@
-//! What the shuffled, Owen-scrambled digital (0,2)-sequences ([`Sobol`],
-//! [`Pmj02`]) share: their seeds, the scramble of a point's digits and the
-//! conversion to a point, and the lane-parallel `fill`.
+//! The one Owen-scrambled Sobol' module: what the shuffled, scrambled
+//! digital sequences ([`Sobol`], [`Pmj02`]) share (their seeds, the
+//! scramble of a point's digits and the conversion to a point, the
+//! lane-parallel `fill`), Sobol' dimensions 0 and 1 (the identity and the
+//! Pascal matrix), and the draws of a [`Domain`](crate::Domain) built from
+//! them: 1D, 2D and the 4D set (with dimensions 2 and 3 from
+//! [`sobol_4d`](super::sobol_4d)). [`Sobol`], [`Pmj02`],
+//! [`Padded`](crate::Padded), [`ZSobol`](crate::ZSobol) and
+//! [`BlueNoise`](crate::BlueNoise) all call these.
 //!
 //! [`Sobol`]: crate::Sobol
 //! [`Pmj02`]: crate::Pmj02
 
-use glam::Vec2;
+use glam::{Vec2, Vec4};
 
+use super::sobol_4d::dimensions_2_3_reversed;
 use crate::primitives::{hash_u32, owen_scramble_reversed, salt, u32_to_unit_f32};
 use crate::simd::{PointKernel, Pointwise};
 
@@ -34,6 +41,110 @@ impl OwenSeeds {
     }
 }
 
+impl OwenSeeds {
+    /// The seeds of a [`Domain`](crate::Domain) draw from its well-mixed
+    /// 64-bit `stream`, without hashing again: `x` and `y` are its two
+    /// halves, the index shuffle's key a rotation of their xor. The low
+    /// bits of a seed pick a scramble's top digits, and each seed's come
+    /// from a different part of `stream`.
+    #[inline(always)]
+    pub(crate) const fn from_stream(stream: u64) -> Self {
+        let (low, high) = (stream as u32, (stream >> 32) as u32);
+        Self {
+            index: (low ^ high).rotate_right(16) ^ salt::DRAW_ORDER,
+            x: high,
+            y: low,
+        }
+    }
+}
+
+/// Sobol' dimension 1 of `index`, in reversed bit order (bit `k` is the digit
+/// of weight `2^-(k+1)`).
+///
+/// Its generator matrix is the Pascal matrix mod 2: digit `k` is the xor of
+/// the index bits `j` with `binomial(j, k)` odd, which by Lucas' theorem are
+/// the `j` whose set bits include those of `k`. That xor over supersets is
+/// computed for all 32 digits at once in five butterfly steps, one per bit of
+/// `k`: step `b` folds bit `k + 2^b` into bit `k` wherever bit `b` of `k` is
+/// clear, which is what each mask selects (`0x5555_5555`: positions with bit
+/// 0 clear; `0x3333_3333`: bit 1 clear; and so on). Equivalently, its
+/// direction numbers are those of the primitive polynomial `x + 1`,
+/// `v_0 = 2^31` and `v_j = v_(j-1) ^ (v_(j-1) >> 1)` (Joe & Kuo's dimension
+/// 2), tested in `sobol.rs`.
+#[inline(always)]
+pub(crate) const fn pascal_reversed(index: u32) -> u32 {
+    let mut y = index;
+    y ^= (y >> 1) & 0x5555_5555;
+    y ^= (y >> 2) & 0x3333_3333;
+    y ^= (y >> 4) & 0x0f0f_0f0f;
+    y ^= (y >> 8) & 0x00ff_00ff;
+    y ^= y >> 16;
+    y
+}
+
+/// Sobol' dimensions 0 and 1 of sequence index `s`, in reversed-digit
+/// form: dimension 0's generator is the identity, so its reversed digits
+/// are `s` itself.
+#[inline(always)]
+pub(crate) const fn sobol_reversed(s: u32) -> (u32, u32) {
+    (s, pascal_reversed(s))
+}
+
+/// The one Sobol' point formula: point `s` (an already shuffled sequence
+/// index) of dimensions (0, 1), Owen-scrambled by `seeds`, in
+/// natural-order 0.32 fixed point.
+#[inline(always)]
+pub(crate) const fn sobol_point_bits(s: u32, seeds: OwenSeeds) -> (u32, u32) {
+    let (x, y) = sobol_reversed(s);
+    scrambled_bits(x, y, seeds)
+}
+
+/// One coordinate given as reversed digits, Owen-scrambled by `seed`, as
+/// a value in `[0, 1)`: a 1D draw.
+#[inline(always)]
+pub(crate) const fn scrambled_unit(reversed: u32, seed: u32) -> f32 {
+    u32_to_unit_f32(owen_scramble_reversed(reversed, seed).reverse_bits())
+}
+
+/// `(reverse_bits(a), reverse_bits(b))` in one 64-bit reversal: x86 has
+/// no bit-reverse instruction, and a 64-bit reversal costs what a 32-bit
+/// one does.
+#[inline(always)]
+const fn reverse_pair(a: u32, b: u32) -> (u32, u32) {
+    let r = ((b as u64) << 32 | a as u64).reverse_bits();
+    ((r >> 32) as u32, r as u32)
+}
+
+/// Point `s` (an already shuffled index) of the 4D Owen-scrambled Sobol'
+/// set whose scrambles are seeded by `stream`, each coordinate's reversed
+/// digits first xored with `shift` (a digital shift: zeros for the plain
+/// set, a pixel's shift for [`BlueNoise`](crate::BlueNoise)). Dimensions
+/// (0, 1) use [`OwenSeeds::from_stream`]'s seeds, so the first two
+/// coordinates are the 2D draw's; dimensions 2 and 3 two more rotations.
+#[inline(always)]
+pub(crate) const fn sobol_4d_point(s: u32, stream: u64, shift: [u32; 4]) -> Vec4 {
+    let seeds = OwenSeeds::from_stream(stream);
+    let (low, high) = (stream as u32, (stream >> 32) as u32);
+    let z = low.rotate_right(11) ^ high.rotate_right(5) ^ salt::SOBOL_Z;
+    let w = high.rotate_right(21) ^ low.rotate_right(27) ^ salt::SOBOL_W;
+    let (c0, c1) = sobol_reversed(s);
+    let (c2, c3) = dimensions_2_3_reversed(s);
+    let (a, b) = reverse_pair(
+        owen_scramble_reversed(c0 ^ shift[0], seeds.x),
+        owen_scramble_reversed(c1 ^ shift[1], seeds.y),
+    );
+    let (c, d) = reverse_pair(
+        owen_scramble_reversed(c2 ^ shift[2], z),
+        owen_scramble_reversed(c3 ^ shift[3], w),
+    );
+    Vec4::new(
+        u32_to_unit_f32(a),
+        u32_to_unit_f32(b),
+        u32_to_unit_f32(c),
+        u32_to_unit_f32(d),
+    )
+}
+
 /// Finishes a point of a shuffled digital (0,2)-sequence: Owen-scrambles
 /// the two coordinates, given as digits in reversed bit order, and returns
 /// them in natural order (0.32 fixed point).
@@ -43,9 +154,9 @@ pub(crate) const fn scrambled_bits(
     y_reversed: u32,
     seeds: OwenSeeds,
 ) -> (u32, u32) {
-    (
-        owen_scramble_reversed(x_reversed, seeds.x).reverse_bits(),
-        owen_scramble_reversed(y_reversed, seeds.y).reverse_bits(),
+    reverse_pair(
+        owen_scramble_reversed(x_reversed, seeds.x),
+        owen_scramble_reversed(y_reversed, seeds.y),
     )
 }
 

@@ -1,12 +1,13 @@
 use glam::Vec2;
 
-use super::{fill_run, fill_set, set_size};
-use crate::Error;
+use super::{Sobol, fill_run, fill_set, set_size};
 use crate::primitives::{
-    hash_combine, hash_u32, owen_scramble_reversed, salt, stratum_to_unit_f32, u32_to_unit_f32,
+    hash_combine, hash_u32, owen_scramble_reversed, prefix_shuffle, salt, stratum_to_unit_f32,
+    u32_to_unit_f32,
 };
 use crate::simd::{Isa, Kernel};
 use crate::traits::{FillOn, Sampler2D, Sequence2D};
+use crate::{DomainSampler, Error};
 
 /// Base-3 digits scrambled per sample: `3^15 = 14_348_907` strata, the most
 /// that fit in the `2^24` f32 strata of `[0, 1)`.
@@ -128,6 +129,26 @@ impl Sampler2D for Halton {
     #[inline]
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
         self.fill_on(Isa::best(), pattern, out);
+    }
+}
+
+/// A domain's draws: the sampler's own points at the index read through a
+/// [`prefix_shuffle`] keyed by the stream (Halton visits its points in the
+/// same order for every pattern, so unshuffled draws would pair their
+/// samples), 1D draws Sobol's, 3D and 4D padded.
+impl DomainSampler for Halton {
+    #[inline]
+    fn locate(&self, index: u32, key: u64) -> (u32, u64) {
+        (index, key)
+    }
+    #[inline]
+    fn domain_1d(&self, index: u32, stream: u64) -> f32 {
+        Sobol::unbounded().domain_1d(index, stream)
+    }
+    #[inline]
+    fn domain_2d(&self, index: u32, stream: u64) -> Vec2 {
+        let s = prefix_shuffle(index, (stream >> 32) as u32);
+        self.sample(s, stream as u32)
     }
 }
 

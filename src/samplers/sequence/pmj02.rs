@@ -1,11 +1,11 @@
-use glam::Vec2;
+use glam::{Vec2, Vec3, Vec4};
 
-use super::digital::{DigitalSequence, OwenSeeds, scrambled_bits};
-use super::{fill_run, fill_set, set_size};
-use crate::Error;
-use crate::primitives::owen_scramble;
+use super::digital::{DigitalSequence, OwenSeeds, bits_to_point, scrambled_bits};
+use super::{Sobol, fill_run, fill_set, set_size};
+use crate::primitives::{owen_scramble, prefix_shuffle};
 use crate::simd::{Isa, Kernel};
 use crate::traits::{FillOn, Sampler2D, Sequence2D};
+use crate::{DomainSampler, Error};
 
 /// Progressive multi-jittered (0,2) sequence (pmj02, Christensen, Kensler &
 /// Kilpatrick 2018), generated in O(1) per sample with no tables.
@@ -182,12 +182,46 @@ pub(crate) const fn stirling_y(index: u32) -> u32 {
     (stirling_x(index << 1) >> 1) ^ (0u32.wrapping_sub(index >> 31) & 0x8000_8000)
 }
 
+/// Point `s` (an already shuffled index) of the pmj02 sequence,
+/// Owen-scrambled by `seeds`, in natural-order 0.32 fixed point.
+#[inline(always)]
+const fn pmj02_point_bits(s: u32, seeds: OwenSeeds) -> (u32, u32) {
+    scrambled_bits(stirling_x(s), stirling_y(s), seeds)
+}
+
 impl DigitalSequence for Pmj02 {
     /// Sample `index` of the sequence, in natural-order 0.32 fixed point.
     #[inline(always)]
     fn point_bits(index: u32, seeds: OwenSeeds) -> (u32, u32) {
-        let s = owen_scramble(index, seeds.index);
-        scrambled_bits(stirling_x(s), stirling_y(s), seeds)
+        pmj02_point_bits(owen_scramble(index, seeds.index), seeds)
+    }
+}
+
+/// A domain's draws: 2D draws are pmj02 at the index read through a
+/// [`prefix_shuffle`]; 1D, 3D and 4D draws are the Owen-scrambled Sobol'
+/// ones (pmj02 has no 4D construction; its 1D projection is Sobol's
+/// dimension 0 anyway).
+impl DomainSampler for Pmj02 {
+    #[inline]
+    fn locate(&self, index: u32, key: u64) -> (u32, u64) {
+        (index, key)
+    }
+    #[inline]
+    fn domain_1d(&self, index: u32, stream: u64) -> f32 {
+        Sobol::unbounded().domain_1d(index, stream)
+    }
+    #[inline]
+    fn domain_2d(&self, index: u32, stream: u64) -> Vec2 {
+        let seeds = OwenSeeds::from_stream(stream);
+        bits_to_point(pmj02_point_bits(prefix_shuffle(index, seeds.index), seeds))
+    }
+    #[inline]
+    fn domain_3d(&self, index: u32, stream: u64) -> Vec3 {
+        Sobol::unbounded().domain_3d(index, stream)
+    }
+    #[inline]
+    fn domain_4d(&self, index: u32, stream: u64) -> Vec4 {
+        Sobol::unbounded().domain_4d(index, stream)
     }
 }
 

@@ -1,9 +1,12 @@
-use glam::Vec2;
+use glam::{Vec2, Vec3, Vec4};
 
-use super::digital::{DigitalSequence, OwenSeeds, scrambled_bits};
+use super::digital::{
+    DigitalSequence, OwenSeeds, bits_to_point, scrambled_unit, sobol_4d_point, sobol_point_bits,
+};
 use super::{fill_run, fill_set, set_size};
+use crate::DomainSampler;
 use crate::Error;
-use crate::primitives::owen_scramble;
+use crate::primitives::{owen_scramble, prefix_shuffle};
 use crate::simd::{Isa, Kernel};
 use crate::traits::{FillOn, Sampler2D, Sequence2D};
 
@@ -158,42 +161,47 @@ impl FillOn for Sobol {
     }
 }
 
-/// Sobol dimension 1 of `index`, in reversed bit order (bit `k` is the digit
-/// of weight `2^-(k+1)`).
-///
-/// Its generator matrix is the Pascal matrix mod 2: digit `k` is the xor of
-/// the index bits `j` with `binomial(j, k)` odd, which by Lucas' theorem are
-/// the `j` whose set bits include those of `k`. That xor over supersets is
-/// computed for all 32 digits at once in five butterfly steps, one per bit of
-/// `k`: step `b` folds bit `k + 2^b` into bit `k` wherever bit `b` of `k` is
-/// clear, which is what each mask selects (`0x5555_5555`: positions with bit
-/// 0 clear; `0x3333_3333`: bit 1 clear; and so on). Equivalently, its
-/// direction numbers are those of the primitive polynomial `x + 1`,
-/// `v_0 = 2^31` and `v_j = v_(j-1) ^ (v_(j-1) >> 1)` (Joe & Kuo's dimension
-/// 2), tested below.
-#[inline(always)]
-pub(crate) const fn pascal_reversed(index: u32) -> u32 {
-    let mut y = index;
-    y ^= (y >> 1) & 0x5555_5555;
-    y ^= (y >> 2) & 0x3333_3333;
-    y ^= (y >> 4) & 0x0f0f_0f0f;
-    y ^= (y >> 8) & 0x00ff_00ff;
-    y ^= y >> 16;
-    y
-}
-
 impl DigitalSequence for Sobol {
     #[inline(always)]
     fn point_bits(index: u32, seeds: OwenSeeds) -> (u32, u32) {
-        let s = owen_scramble(index, seeds.index);
-        // Dimension 0's generator is the identity: its reversed digits are `s`.
-        scrambled_bits(s, pascal_reversed(s), seeds)
+        sobol_point_bits(owen_scramble(index, seeds.index), seeds)
+    }
+}
+
+/// Draw `k` of a domain: Sobol' dimensions (0, 1) at the index read
+/// through a [`prefix_shuffle`] (so every power-of-two prefix of a pixel
+/// is a net and two draws pair their samples freely), 1D draws dimension
+/// 0, 3D and 4D draws the 4D set ([`DomainSampler`]'s table).
+impl DomainSampler for Sobol {
+    #[inline]
+    fn locate(&self, index: u32, key: u64) -> (u32, u64) {
+        (index, key)
+    }
+    #[inline]
+    fn domain_1d(&self, index: u32, stream: u64) -> f32 {
+        let seeds = OwenSeeds::from_stream(stream);
+        scrambled_unit(prefix_shuffle(index, seeds.index), seeds.x)
+    }
+    #[inline]
+    fn domain_2d(&self, index: u32, stream: u64) -> Vec2 {
+        let seeds = OwenSeeds::from_stream(stream);
+        bits_to_point(sobol_point_bits(prefix_shuffle(index, seeds.index), seeds))
+    }
+    #[inline]
+    fn domain_3d(&self, index: u32, stream: u64) -> Vec3 {
+        self.domain_4d(index, stream).truncate()
+    }
+    #[inline]
+    fn domain_4d(&self, index: u32, stream: u64) -> Vec4 {
+        let s = prefix_shuffle(index, OwenSeeds::from_stream(stream).index);
+        sobol_4d_point(s, stream, [0; 4])
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::samplers::sequence::digital::pascal_reversed;
     use crate::samplers::sequence::digital::tests::is_02_sequence;
 
     #[test]

@@ -60,7 +60,7 @@ const DIMENSION_3: Polynomial = Polynomial {
 };
 
 /// Joe & Kuo's dimension 2 (our dimension 1): `x + 1`, `m = 1`; used only
-/// to check the recurrence against [`pascal_reversed`](super::super::sobol).
+/// to check the recurrence against `pascal_reversed` (in `digital.rs`).
 #[cfg(test)]
 const DIMENSION_1: Polynomial = Polynomial {
     degree: 1,
@@ -147,7 +147,7 @@ pub(crate) const fn dimensions_2_3_reversed(index: u32) -> (u32, u32) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::samplers::sequence::sobol::pascal_reversed;
+    use crate::samplers::sequence::digital::pascal_reversed;
 
     #[test]
     fn the_recurrence_gives_the_pascal_matrix_for_x_plus_1() {
