@@ -8,16 +8,21 @@
 //! scattered pixels and indices from a fixed-seed `Pcg32`), side by side
 //! in one run:
 //!
-//! - `unit/2d`: one unit; `unit/path`: one unit per pair a path draws;
-//! - `<back end>/start+2d`: `start` and one `next_2d`;
+//! - `unit/2d`: one unit; `unit/path`: nine units (one per draw of the
+//!   path below);
+//! - `<back end>/start+2d` and `<back end>/any+2d`: `start` and one
+//!   `next_2d`, through the concrete type and through `AnyPixelSampler`
+//!   (what `PixelSamplerKind::build` returns);
 //! - `<back end>/start+4d`: `start` and one `next_4d`;
-//! - `<back end>/path`: `start`, `next_4d` (film and lens), `next_1d`
-//!   (time), then per bounce `branch(BOUNCE).branch(b)`, `next_2d` and
-//!   `next_1d`: 4 to 9 draws per sample, the count scattered too.
+//! - `<back end>/path` and `<back end>/any-path`: `start`, then three
+//!   bounces of `branch(BOUNCE).branch(b)`, `next_1d`, `next_1d`,
+//!   `next_2d`: nine keyed draws, what a path tracer with light sampling
+//!   draws per sample.
 //!
-//! Back ends: sobol, pmj02, random, cmj (padded) and zsobol, as concrete
-//! types. The unit runs first and last (`unit/2d-again`); ratios divide
-//! by the faster. The table goes to stdout and `<target>/domain-ratios.md`.
+//! Back ends: sobol, pmj02, random, jittered, cmj, blue-multi-jittered
+//! (padded), zsobol and blue-noise. The unit runs first and last
+//! (`unit/2d-again`); ratios divide by the faster. The table goes to
+//! stdout and `<target>/domain-ratios.md`.
 //! `cargo bench --bench speed -- domain` runs only this group.
 
 use std::fmt::Write as _;
@@ -27,7 +32,10 @@ use std::time::SystemTime;
 use criterion::{BenchmarkId, Criterion, criterion_group};
 use rand::Rng;
 use wellspread::glam::Vec2;
-use wellspread::{CorrelatedMultiJittered, Padded, PixelSampler, Pmj02, Random, Sobol, ZSobol};
+use wellspread::{
+    AnyPixelSampler, BlueMultiJittered, BlueNoise, CorrelatedMultiJittered, Jittered, Padded,
+    PixelSampler, PixelSamplerKind, Pmj02, Random, Sobol, ZSobol,
+};
 
 use crate::sampler_benches::{configure, estimate_ns, pcg, target_dir};
 
@@ -64,14 +72,15 @@ fn unit([x, y]: [u32; 2], index: u32, dimension: u32) -> Vec2 {
     Vec2::new(f(a), f(b))
 }
 
-/// A scattered pixel sample: pixel, index, and how many draws its path
-/// makes (4 to 9).
+/// A scattered pixel sample: pixel and index.
 #[derive(Clone, Copy)]
 struct Input {
     pixel: [u32; 2],
     index: u32,
-    draws: u32,
 }
+
+/// Bounces of the path workload: three keyed draws each.
+const BOUNCES: u32 = 3;
 
 fn inputs() -> Vec<Input> {
     let mut rng = pcg();
@@ -82,38 +91,30 @@ fn inputs() -> Vec<Input> {
                 rng.random_range(0..RESOLUTION[1]),
             ],
             index: rng.random_range(0..SPP),
-            draws: rng.random_range(4..=9),
         })
         .collect()
 }
 
-/// The path workload: film and lens, time, then bounces until `draws`
-/// draws are made. Returns a value that depends on every draw.
+/// The path workload: three bounces of a bounce branch, two 1D draws and
+/// a 2D draw. Returns a value that depends on every draw.
 #[inline(always)]
 fn path<P: PixelSampler + Copy>(sampler: &P, input: Input) -> f32 {
-    let mut d = sampler.start(input.pixel, input.index);
-    let film_lens = d.next_4d();
-    let mut acc = film_lens.x + film_lens.w + d.next_1d();
-    let mut made = 2;
-    let mut b = 0;
-    while made < input.draws {
+    let d = sampler.start(input.pixel, input.index);
+    let mut acc = 0.0;
+    for b in 0..BOUNCES {
         let mut bounce = d.branch(BOUNCE).branch(b);
+        acc += bounce.next_1d();
+        acc += bounce.next_1d();
         acc += bounce.next_2d().y;
-        made += 1;
-        if made < input.draws {
-            acc += bounce.next_1d();
-            made += 1;
-        }
-        b += 1;
     }
     acc
 }
 
-/// Pairs the unit makes for the same path: the 4D draw is two.
+/// The unit's cost of the same path: one unit per draw.
 #[inline(always)]
 fn unit_path(input: Input) -> f32 {
     let mut acc = 0.0;
-    for dimension in 0..=input.draws {
+    for dimension in 0..3 * BOUNCES {
         acc += unit(input.pixel, input.index, dimension).x;
     }
     acc
@@ -123,12 +124,20 @@ fn back_end<P: PixelSampler + Copy>(
     group: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
     name: &str,
     sampler: P,
+    any: AnyPixelSampler,
     inputs: &[Input],
 ) {
     group.bench_function(BenchmarkId::new(name, "start+2d"), |b| {
         b.iter(|| {
             for input in inputs {
                 black_box(sampler.start(input.pixel, input.index).next_2d());
+            }
+        })
+    });
+    group.bench_function(BenchmarkId::new(name, "any+2d"), |b| {
+        b.iter(|| {
+            for input in inputs {
+                black_box(any.start(input.pixel, input.index).next_2d());
             }
         })
     });
@@ -146,16 +155,36 @@ fn back_end<P: PixelSampler + Copy>(
             }
         })
     });
+    group.bench_function(BenchmarkId::new(name, "any-path"), |b| {
+        b.iter(|| {
+            for input in inputs {
+                black_box(path(&any, *input));
+            }
+        })
+    });
 }
 
-/// Back ends and their targets for start+2d (and next_4d for sobol).
+/// Back ends and their targets for start + next_2d over the unit (for
+/// blue-noise: over padded sobol's start + next_2d), and for sobol's
+/// next_4d.
 const BACK_ENDS: &[(&str, f64, Option<f64>)] = &[
-    ("sobol", 2.5, Some(3.0)),
-    ("pmj02", 2.5, None),
-    ("random", 1.5, None),
-    ("cmj", 3.5, None),
+    ("sobol", 3.0, Some(4.5)),
+    ("pmj02", 3.0, None),
+    ("random", 1.0, None),
+    ("jittered", 5.0, None),
+    ("cmj", 5.0, None),
+    ("blue-multi-jittered", 5.0, None),
     ("zsobol", 3.5, None),
+    ("blue-noise", 1.3, None),
 ];
+
+/// The `AnyPixelSampler` of a back end's name.
+fn any(name: &str) -> AnyPixelSampler {
+    name.parse::<PixelSamplerKind>()
+        .unwrap()
+        .build(SPP, RESOLUTION, 0)
+        .unwrap()
+}
 
 fn domain(c: &mut Criterion) {
     let since = SystemTime::now();
@@ -181,30 +210,56 @@ fn domain(c: &mut Criterion) {
         &mut group,
         "sobol",
         Padded::new(Sobol::new(SPP).unwrap(), 0),
+        any("sobol"),
         &inputs,
     );
     back_end(
         &mut group,
         "pmj02",
         Padded::new(Pmj02::new(SPP).unwrap(), 0),
+        any("pmj02"),
         &inputs,
     );
     back_end(
         &mut group,
         "random",
         Padded::new(Random::new(SPP).unwrap(), 0),
+        any("random"),
+        &inputs,
+    );
+    back_end(
+        &mut group,
+        "jittered",
+        Padded::new(Jittered::new(SPP).unwrap(), 0),
+        any("jittered"),
         &inputs,
     );
     back_end(
         &mut group,
         "cmj",
         Padded::new(CorrelatedMultiJittered::new(SPP).unwrap(), 0),
+        any("cmj"),
+        &inputs,
+    );
+    back_end(
+        &mut group,
+        "blue-multi-jittered",
+        Padded::new(BlueMultiJittered::new(SPP).unwrap(), 0),
+        any("blue-multi-jittered"),
         &inputs,
     );
     back_end(
         &mut group,
         "zsobol",
         ZSobol::new(SPP, RESOLUTION, 0).unwrap(),
+        any("zsobol"),
+        &inputs,
+    );
+    back_end(
+        &mut group,
+        "blue-noise",
+        BlueNoise::new(SPP, RESOLUTION, 0).unwrap(),
+        any("blue-noise"),
         &inputs,
     );
     group.bench_function(BenchmarkId::new("unit", "2d-again"), unit_2d);
@@ -221,26 +276,42 @@ fn report(since: SystemTime) {
         _ => return,
     };
     let unit_path = median("unit/path");
+    let sobol_2d = median("sobol/start+2d");
+    let ratio = |a: Option<f64>, b: Option<f64>| match (a, b) {
+        (Some(a), Some(b)) => format!("{:.2}x", a / b),
+        _ => "-".to_string(),
+    };
     let mut t = String::new();
     let _ = writeln!(
         t,
-        "| back end | start+next_2d / unit | target | start+next_4d / unit | target | path / unit path |"
+        "| back end | start+next_2d / unit | through AnyPixelSampler | target | any / static | start+next_4d / unit | 9-draw path / unit path | any path / static path |"
     );
-    let _ = writeln!(t, "|---|---|---|---|---|---|");
+    let _ = writeln!(t, "|---|---|---|---|---|---|---|---|");
     for &(name, target_2d, target_4d) in BACK_ENDS {
-        let cell = |id: &str, base: Option<f64>| match (median(&format!("{name}/{id}")), base) {
-            (Some(a), Some(b)) => format!("{:.2}x", a / b),
-            _ => "-".to_string(),
+        let m = |id: &str| median(&format!("{name}/{id}"));
+        let (base, target) = if name == "blue-noise" {
+            (sobol_2d, format!("<= {target_2d:.1}x sobol's"))
+        } else {
+            (Some(unit), format!("<= {target_2d:.1}x"))
+        };
+        let four = match target_4d {
+            Some(v) => format!("{} (<= {v:.1}x)", ratio(m("start+4d"), Some(unit))),
+            None => ratio(m("start+4d"), Some(unit)),
         };
         let _ = writeln!(
             t,
-            "| {name} | {} | <= {target_2d:.1}x | {} | {} | {} |",
-            cell("start+2d", Some(unit)),
-            cell("start+4d", Some(unit)),
-            target_4d.map_or("-".to_string(), |v| format!("<= {v:.1}x")),
-            cell("path", unit_path),
+            "| {name} | {} | {} | {target} | {} | {four} | {} | {} |",
+            ratio(m("start+2d"), base),
+            ratio(m("any+2d"), base),
+            ratio(m("any+2d"), m("start+2d")),
+            ratio(m("path"), unit_path),
+            ratio(m("any-path"), m("path")),
         );
     }
+    let _ = writeln!(
+        t,
+        "\nBlue-noise's first two columns are over padded sobol's start+next_2d; the others over the unit. Targets on AnyPixelSampler: <= 1.15x the static type."
+    );
     println!("\nDomain cost, ratios to the unit (median ns per pixel sample / unit's)\n\n{t}");
     let _ = std::fs::write(target_dir().join("domain-ratios.md"), t);
 }

@@ -114,16 +114,22 @@ pub const fn prefix_shuffle(index: u32, key: u32) -> u32 {
     let mask = top.saturating_sub(1);
     let half = (32 - zeros) >> 1;
     let mut x = index & mask;
-    let mut round = 0;
-    while round < 3 {
-        let k = key.rotate_left(7 * round);
-        x = x.wrapping_add(k) & mask;
-        x = x.wrapping_mul(k.rotate_right(11) | 1) & mask;
-        x ^= x >> half;
-        x ^= (x >> 1) & k.rotate_right(22);
-        round += 1;
-    }
+    x = shuffle_round(x, key, mask, half);
+    x = shuffle_round(x, key.rotate_left(7), mask, half);
+    x = shuffle_round(x, key.rotate_left(14), mask, half);
     top | x
+}
+
+/// One round of [`prefix_shuffle`]'s bijection of the `mask`-bit domain,
+/// keyed by `k`: an add and an odd multiply (low bits up), a xorshift by
+/// `half` and a `k`-gated neighbour step (high bits down). Written out
+/// rather than looped so every rotation is a constant.
+#[inline(always)]
+const fn shuffle_round(x: u32, k: u32, mask: u32, half: u32) -> u32 {
+    let mut x = x.wrapping_add(k) & mask;
+    x = x.wrapping_mul(k.rotate_right(11) | 1) & mask;
+    x ^= x >> half;
+    x ^ ((x >> 1) & k.rotate_right(22))
 }
 
 /// The key of the permutation for a bare `pattern`: its hash, so that nearby
