@@ -14,13 +14,14 @@ use crate::{DomainSampler, Sampler2D};
 ///
 /// # Properties
 ///
-/// - Each pixel's `len()` samples in each dimension pair are one set of the
-///   wrapped sampler, with all its guarantees (stratification, nets).
-/// - Different pixels, dimension pairs and frames get unrelated patterns, so
-///   the error is white noise across pixels. Pair this with a sampler that
-///   shuffles its index ([`Sobol`], [`Pmj02`], the grid family):
-///   [`Halton`] and [`Hammersley`] visit points in the same order for
-///   every pattern, which correlates dimension pairs (see their docs).
+/// - Each pixel's `len()` samples in each draw are one set of the wrapped
+///   sampler, with all its guarantees (stratification, nets).
+/// - Different pixels, draws and frames get unrelated patterns, so the
+///   error is white noise across pixels, and two draws of a pixel pair
+///   their samples like independent sets (the sequences, and
+///   [`Halton`](crate::Halton) and [`Hammersley`](crate::Hammersley),
+///   whose order is the same for every pattern, shuffle their index per
+///   draw: see [`DomainSampler`]).
 /// - Each draw of a [`Domain`](crate::Domain) is one set of the sampler for
 ///   a pattern picked by the draw's `stream`; what each width gives is
 ///   [`DomainSampler`]'s table.
