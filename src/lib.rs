@@ -143,9 +143,10 @@ pub use pixel::{
 pub use primitives::pattern_seed;
 pub use samplers::{
     AnySampler, BlueMultiJittered, CorrelatedMultiJittered, Halton, Hammersley, Jittered,
-    LatinHypercube, MultiJittered, NRooks, Pmj02, Random, Regular, SamplerKind, Sobol,
+    LatinHypercube, MultiJittered, NRooks, OrthogonalArray, OrthogonalArrayOffset, Pmj02, Random,
+    Regular, SamplerKind, Sobol,
 };
-pub use traits::{Sampler2D, Sequence2D};
+pub use traits::{Sampler2D, SamplerNd, Sequence2D};
 
 // The README's usage example runs as a doctest.
 #[cfg(doctest)]
