@@ -286,6 +286,15 @@ impl fmt::Display for Error {
             ),
             Error::DimensionsOutOfRange {
                 sampler,
+                dimensions: 0,
+                max,
+                ..
+            } => write!(
+                f,
+                "{sampler} makes 1 to {max} dimensions, got 0: ask for at least one"
+            ),
+            Error::DimensionsOutOfRange {
+                sampler,
                 dimensions,
                 max,
                 reason,

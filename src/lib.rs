@@ -15,6 +15,12 @@
 //! rendering any tile gets the same sample. Every coordinate is in `[0, 1)`
 //! after f32 rounding.
 //!
+//! Point sets whose guarantees span more dimensions implement [`SamplerNd`]
+//! (any coordinate of any sample in O(1)): [`LatinHypercube`] (every 1D
+//! projection stratified, any number of dimensions) and
+//! [`OrthogonalArray`] (every 2D, 3D or 4D projection stratified, at
+//! `q^t` samples for a prime power `q`).
+//!
 //! ```
 //! use wellspread::{CorrelatedMultiJittered, Sampler2D, pattern_seed};
 //!

@@ -181,6 +181,11 @@ mod tests {
         };
         let message = std::format!("{err}");
         assert!(message.contains("at most 16777216"), "{message}");
+        let message = std::format!("{}", LatinHypercube::new(4, 0).unwrap_err());
+        assert_eq!(
+            message,
+            "LatinHypercube makes 1 to 65536 dimensions, got 0: ask for at least one"
+        );
         let Err(err) = LatinHypercube::new(4, (1 << 16) + 1) else {
             panic!("accepted 2^16 + 1 dimensions");
         };
