@@ -12,6 +12,8 @@
 //! 1`, for GF(9) `x^2 + 1`), found by trial division when the field is
 //! made.
 
+use crate::primitives::InvariantDivisor;
+
 /// The largest field order: `4096 = 2^12`, the largest `q` with `q^2` at
 /// most `2^24` (the most samples a stratified f32 axis holds).
 pub(crate) const MAX_ORDER: u32 = 4096;
@@ -22,6 +24,9 @@ pub(crate) const MAX_ORDER: u32 = 4096;
 pub(crate) struct Field {
     /// The characteristic, a prime.
     p: u32,
+    /// `p` with its reciprocal, so that the digit and remainder operations
+    /// multiply instead of dividing.
+    divisor: InvariantDivisor,
     /// The degree over GF(p).
     k: u32,
     /// `p^(k - 1)`: the place value of the top digit.
@@ -130,9 +135,11 @@ impl Field {
             return None;
         };
         let top_place = q / p;
+        let divisor = InvariantDivisor::new(p);
         if k == 1 {
             return Some(Self {
                 p,
+                divisor,
                 k,
                 top_place,
                 x_to_the_k: 0,
@@ -153,6 +160,7 @@ impl Field {
         }
         Some(Self {
             p,
+            divisor,
             k,
             top_place,
             x_to_the_k,
@@ -182,10 +190,11 @@ impl Field {
     const fn add_digits(self, mut a: u32, mut b: u32) -> u32 {
         let (mut sum, mut place, mut i) = (0, 1, 0);
         while i < self.k {
-            let s = a % self.p + b % self.p;
+            let (a_rest, a_digit) = self.divisor.div_rem(a);
+            let (b_rest, b_digit) = self.divisor.div_rem(b);
+            let s = a_digit + b_digit;
             sum += if s >= self.p { s - self.p } else { s } * place;
-            a /= self.p;
-            b /= self.p;
+            (a, b) = (a_rest, b_rest);
             place *= self.p;
             i += 1;
         }
@@ -196,8 +205,9 @@ impl Field {
     const fn scale_digits(self, mut a: u32, c: u32) -> u32 {
         let (mut product, mut place, mut i) = (0, 1, 0);
         while i < self.k {
-            product += (a % self.p) * c % self.p * place;
-            a /= self.p;
+            let (rest, digit) = self.divisor.div_rem(a);
+            product += self.divisor.div_rem(digit * c).1 * place;
+            a = rest;
             place *= self.p;
             i += 1;
         }
@@ -206,8 +216,14 @@ impl Field {
 
     /// `x a`, reduced: the top digit comes back as that multiple of `x^k`.
     const fn times_x_digits(self, a: u32) -> u32 {
-        let top = a / self.top_place;
-        let shifted = a % self.top_place * self.p;
+        // The top digit, and the rest shifted up one place.
+        let mut top = a;
+        let mut i = 1;
+        while i < self.k {
+            top = self.divisor.div_rem(top).0;
+            i += 1;
+        }
+        let shifted = (a - top * self.top_place) * self.p;
         self.add_digits(shifted, self.scale_digits(self.x_to_the_k, top))
     }
 
@@ -216,7 +232,7 @@ impl Field {
     pub(crate) const fn mul(self, a: u32, b: u32) -> u32 {
         if self.k == 1 {
             // a, b < 4096: the product fits in u32.
-            a * b % self.p
+            self.divisor.div_rem(a * b).1
         } else if self.p == 2 {
             self.mul_binary(a, b)
         } else {
@@ -242,12 +258,20 @@ impl Field {
     /// `a b` for any `p`, by Horner's rule on `b`'s digits from the top:
     /// `product = x product + b_i a`.
     const fn mul_digits(self, a: u32, b: u32) -> u32 {
+        // b's digits, lowest first.
+        let mut digits = [0; 12];
+        let (mut rest, mut i) = (b, 0);
+        while i < self.k {
+            let (next, digit) = self.divisor.div_rem(rest);
+            digits[i as usize] = digit;
+            rest = next;
+            i += 1;
+        }
         let mut product = 0;
-        let mut place = self.top_place;
-        while place > 0 {
+        while i > 0 {
+            i -= 1;
             product = self.times_x_digits(product);
-            product = self.add_digits(product, self.scale_digits(a, b / place % self.p));
-            place /= self.p;
+            product = self.add_digits(product, self.scale_digits(a, digits[i as usize]));
         }
         product
     }
