@@ -14,7 +14,15 @@
 //! venv/bin/python examples/orthogonal_vs_mitsuba.py > examples/orthogonal_vs_mitsuba.csv
 //! ```
 //!
-//! Without the CSV argument the Mitsuba columns are left out.
+//! Without the CSV argument the Mitsuba columns are left out. With
+//! `--svg FILE` it also draws the 2D projections of dimension pairs 0-1,
+//! 0-6 and 3-5 of one pattern of `orthogonal`, `latin-hypercube` and
+//! padded Sobol' pairs at n = 25 and 64 (`docs/images/orthogonal-projections.svg`):
+//!
+//! ```sh
+//! cargo run --release --example orthogonal_vs_mitsuba -- examples/orthogonal_vs_mitsuba.csv \
+//!     --svg docs/images/orthogonal-projections.svg
+//! ```
 //!
 //! Integrands (exact values in closed form):
 //! - `coupled-4d`: `exp(-((x0 - x2)^2 + (x1 - x3)^2))`, dimensions coupled
@@ -216,8 +224,120 @@ fn slope(points: &[(f64, f64)]) -> f64 {
     sxy / sxx
 }
 
+/// The projections picture: rows are (sampler, n), columns dimension
+/// pairs; each panel the unit square with the `sqrt(n) x sqrt(n)` grid and
+/// the points of pattern 0.
+fn projections_svg() -> String {
+    const PANEL: f64 = 170.0;
+    const GAP: f64 = 24.0;
+    const LEFT: f64 = 190.0;
+    const TOP: f64 = 40.0;
+    let pairs = [(0, 1), (0, 6), (3, 5)];
+    let mut rows: Vec<(String, u32, Box<dyn Fill>)> = Vec::new();
+    for n in [25, 64] {
+        let q = OrthogonalArray::new(n, 1, 2).unwrap().levels();
+        let d = (q + 1).min(DIMENSIONS as u32);
+        let array = OrthogonalArray::new(n, d, 2).unwrap();
+        let what = if q + 1 < 7 {
+            format!("orthogonal (dims {}+ padded)", q + 1)
+        } else {
+            "orthogonal".to_owned()
+        };
+        rows.push((what, n, Box::new(Padded(array))));
+        let cube = LatinHypercube::new(n, DIMENSIONS as u32).unwrap();
+        rows.push(("latin-hypercube".to_owned(), n, Box::new(Padded(cube))));
+        rows.push((
+            "sobol, padded pairs".to_owned(),
+            n,
+            Box::new(Pairs(Sobol::new(n).unwrap())),
+        ));
+    }
+    let width = LEFT + pairs.len() as f64 * (PANEL + GAP);
+    let height = TOP + rows.len() as f64 * (PANEL + GAP);
+    let mut svg = String::new();
+    writeln!(
+        svg,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" viewBox="0 0 {width} {height}" font-family="sans-serif" font-size="13">"#
+    )
+    .unwrap();
+    writeln!(svg, r#"<rect width="100%" height="100%" fill="white"/>"#).unwrap();
+    for (c, (a, b)) in pairs.iter().enumerate() {
+        let x = LEFT + c as f64 * (PANEL + GAP);
+        writeln!(
+            svg,
+            r#"<text x="{x}" y="{}">dimensions {a} (across) and {b} (up)</text>"#,
+            TOP - 14.0
+        )
+        .unwrap();
+    }
+    let mut point = [0.0; DIMENSIONS];
+    for (r, (name, n, sampler)) in rows.iter().enumerate() {
+        let y0 = TOP + r as f64 * (PANEL + GAP);
+        writeln!(
+            svg,
+            r#"<text x="10" y="{}">{name}</text>"#,
+            y0 + PANEL / 2.0 - 8.0
+        )
+        .unwrap();
+        writeln!(
+            svg,
+            r#"<text x="10" y="{}">n = {n}</text>"#,
+            y0 + PANEL / 2.0 + 10.0
+        )
+        .unwrap();
+        let points: Vec<[f64; DIMENSIONS]> = (0..*n)
+            .map(|index| {
+                sampler.fill(index, 0, &mut point);
+                point
+            })
+            .collect();
+        let q = (*n as f64).sqrt();
+        for (c, &(a, b)) in pairs.iter().enumerate() {
+            let x0 = LEFT + c as f64 * (PANEL + GAP);
+            for k in 1..q as u32 {
+                let t = f64::from(k) / q * PANEL;
+                writeln!(
+                    svg,
+                    r##"<path d="M{:.2} {y0:.2}v{PANEL}M{x0:.2} {:.2}h{PANEL}" stroke="#bbb" stroke-width="0.7"/>"##,
+                    x0 + t,
+                    y0 + t
+                )
+                .unwrap();
+            }
+            writeln!(
+                svg,
+                r#"<rect x="{x0}" y="{y0}" width="{PANEL}" height="{PANEL}" fill="none" stroke="black"/>"#
+            )
+            .unwrap();
+            for p in &points {
+                writeln!(
+                    svg,
+                    r##"<circle cx="{:.2}" cy="{:.2}" r="2.2" fill="#c0392b"/>"##,
+                    x0 + p[a] * PANEL,
+                    y0 + (1.0 - p[b]) * PANEL
+                )
+                .unwrap();
+            }
+        }
+    }
+    svg += "</svg>\n";
+    svg
+}
+
 fn main() {
-    let mitsuba = std::env::args().nth(1).map(|path| read_mitsuba(&path));
+    let mut args = std::env::args().skip(1);
+    let (mut csv, mut svg) = (None, None);
+    while let Some(arg) = args.next() {
+        if arg == "--svg" {
+            svg = Some(args.next().expect("--svg needs a file name"));
+        } else {
+            csv = Some(arg);
+        }
+    }
+    if let Some(path) = svg {
+        std::fs::write(&path, projections_svg()).unwrap_or_else(|e| panic!("{path}: {e}"));
+    }
+    let mitsuba = csv.map(|path| read_mitsuba(&path));
     let integrands = integrands();
     // (n, column) -> RMSE per integrand.
     let mut results: BTreeMap<(u32, String), Vec<f64>> = BTreeMap::new();
