@@ -376,3 +376,47 @@ fn dimension_limits_follow_the_field() {
         ));
     }
 }
+
+#[cfg(debug_assertions)]
+#[test]
+#[should_panic(expected = "index 25 out of range 0..25")]
+fn an_index_past_the_set_panics_in_debug_builds() {
+    let _ = OrthogonalArray::new(25, 3, 2).unwrap().coordinate(25, 0, 0);
+}
+
+#[cfg(debug_assertions)]
+#[test]
+#[should_panic(expected = "dimension 3 out of range 0..3")]
+fn a_dimension_past_the_set_panics_in_debug_builds() {
+    let _ = LatinHypercube::new(25, 3).unwrap().coordinate(0, 0, 3);
+}
+
+// Release builds only (debug builds reject the index or dimension): what
+// the docs promise instead of a panic.
+#[cfg(not(debug_assertions))]
+#[test]
+fn out_of_range_requests_give_documented_values_in_release_builds() {
+    let array = OrthogonalArray::new(25, 3, 2).unwrap();
+    let cube = LatinHypercube::new(25, 3).unwrap();
+    for pattern in PATTERNS {
+        for index in [25, 26, 49, u32::MAX] {
+            for dimension in 0..3 {
+                assert_eq!(
+                    array.coordinate(index, pattern, dimension).to_bits(),
+                    array.coordinate(index % 25, pattern, dimension).to_bits()
+                );
+                assert_eq!(
+                    cube.coordinate(index, pattern, dimension).to_bits(),
+                    cube.coordinate(index % 25, pattern, dimension).to_bits()
+                );
+            }
+        }
+        for dimension in [3, 4, 100, u32::MAX] {
+            assert_eq!(
+                array.coordinate(7, pattern, dimension).to_bits(),
+                array.coordinate(7, pattern, dimension % 3).to_bits()
+            );
+            assert!((0.0..1.0).contains(&cube.coordinate(7, pattern, dimension)));
+        }
+    }
+}
