@@ -5,12 +5,13 @@
 //! valgrind --tool=callgrind target/release/examples/draw_cost sobol 2d
 //! ```
 //!
-//! runs `start` and one draw (`1d`, `2d`, `4d`) or the bench's nine-draw
-//! path (`path`) for 2^16 scattered pixel samples of a back end (any
-//! `PixelSamplerKind` name, or `unit` for the bench's PCG unit), through
-//! `AnyPixelSampler` when the workload ends in `-any`. Divide callgrind's
-//! total by 2^16 (after subtracting a run with `none`) for the count per
-//! pixel sample; `docs/performance.md` lists them.
+//! runs `start` and one draw (`1d`, `2d`, `4d`), `start` alone (`none`) or
+//! the bench's nine-draw path (`path`) for 2^16 scattered pixel samples of
+//! a back end (any `PixelSamplerKind` name, or `unit` for the bench's PCG
+//! unit: one unit, or nine for `path`), through `AnyPixelSampler` when the
+//! workload ends in `-any`. Subtract a run of `sobol loop` (the inputs
+//! alone) and divide by 2^16 for the count per pixel sample;
+//! `docs/performance.md` lists them.
 
 use std::hint::black_box;
 use std::process::ExitCode;
@@ -27,6 +28,9 @@ fn unit(x: u32) -> u32 {
 
 fn run<P: PixelSampler + Copy>(sampler: P, workload: &str, inputs: &[([u32; 2], u32)]) -> f32 {
     let mut acc = 0.0;
+    if workload == "loop" {
+        return inputs.iter().map(|&(p, i)| black_box(p[0] ^ p[1] ^ i) as f32).sum();
+    }
     for &(pixel, index) in inputs {
         let mut d = sampler.start(pixel, index);
         acc += match workload {
@@ -51,7 +55,7 @@ fn run<P: PixelSampler + Copy>(sampler: P, workload: &str, inputs: &[([u32; 2], 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let [name, workload] = args.as_slice() else {
-        eprintln!("usage: draw_cost <pixel sampler | unit> <1d | 2d | 4d | path | none>[-any]");
+        eprintln!("usage: draw_cost <pixel sampler | unit> <1d | 2d | 4d | path | none | loop>[-any]");
         return ExitCode::from(2);
     };
     let mut x = 0x5eed_u32;

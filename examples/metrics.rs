@@ -3,6 +3,8 @@
 //! ```sh
 //! cargo run --release --example metrics -- points.csv
 //! cargo run --release --example metrics -- --stratified 8x8 - < points.csv
+//! cargo run --release --example points -- --sampler orthogonal --n 64 --dimensions 5 --strength 3 \
+//!     | cargo run --release --example metrics -- --dimensions 5 --levels 4 --strength 3
 //! ```
 //!
 //! Run with `--help` for the input and output formats and the exit codes.
@@ -27,6 +29,17 @@ pub struct Args {
     /// Also report `is_stratified` on a grid of M columns and K rows
     #[arg(long, value_name = "MxK", value_parser = parse_grid)]
     pub stratified: Option<(u32, u32)>,
+    /// Values per line: 2 for the 2D metrics (default); 1 or more than 2
+    /// for an N-dimensional set, checked projection by projection
+    #[arg(long, value_name = "D", default_value = "2", value_parser = parse_dimensions)]
+    pub dimensions: usize,
+    /// With --dimensions other than 2: check every projection onto 1 to
+    /// --strength dimensions for equal counts in the Q^k cells
+    #[arg(long, value_name = "Q", value_parser = parse_levels)]
+    pub levels: Option<u32>,
+    /// The largest projection --levels checks, 1 to 4
+    #[arg(long, value_name = "T", default_value = "2", value_parser = parse_strength)]
+    pub strength: usize,
     /// CSV file to read; standard input when absent or `-`
     #[arg(value_name = "FILE")]
     pub file: Option<PathBuf>,
@@ -48,6 +61,15 @@ Output: one JSON object on one line with the fields `n`,
 is `null`: the distances need two points, `is_net_base2` and `t_value`
 need n = 2^m.
 Numbers are f64 in shortest round-trip form.
+
+With --dimensions D other than 2, each line holds D numbers and the
+object has `n`, `dimensions`, `is_latin` (every 1D projection has one
+point in each of its n strata) and `non_latin_dimension` (the first that
+is not, or null); with --levels Q, for k = 1 to --strength,
+`stratified_<k>d` (every projection onto k dimensions has the same count
+in each of its Q^k cells; null if Q^k does not divide n) and
+`unstratified_<k>d` (the first projection that is not, as an array of
+dimensions, or null).
 ";
 
 fn main() -> ExitCode {
@@ -70,6 +92,43 @@ pub fn main_with(
     let Some(args) = shared::parse::<Args>("metrics", &after_help, args, stdout)? else {
         return Ok(());
     };
+    if args.dimensions != 2 {
+        let read = |reader: &mut dyn BufRead, size: u64, source: &str| {
+            let mut rows = Rows {
+                dimensions: args.dimensions,
+                values: Vec::new(),
+            };
+            read_records(reader, size, args.dimensions, &mut rows)
+                .map(|()| rows)
+                .map_err(|e| match e {
+                    ReadError::Input(message) => Failure::Input(message),
+                    ReadError::Io(e) => Failure::Io(format!("cannot read {source}: {e}")),
+                })
+        };
+        let rows = match &args.file {
+            Some(path) if path.as_os_str() != "-" => {
+                let file = std::fs::File::open(path)
+                    .map_err(|e| Failure::Io(format!("cannot read {}: {e}", path.display())))?;
+                let size = file.metadata().map_or(0, |m| m.len());
+                read(
+                    &mut io::BufReader::new(file),
+                    size,
+                    &path.display().to_string(),
+                )?
+            }
+            _ => read(&mut io::BufReader::new(stdin), 0, "standard input")?,
+        };
+        let json = report_nd(&rows, args.levels, args.strength).map_err(Failure::Input)?;
+        return writeln!(stdout, "{json}")
+            .map_err(|e| Failure::Io(format!("cannot write the report: {e}")));
+    }
+    if args.levels.is_some() {
+        return Err(Failure::Input(
+            "--levels checks N-dimensional sets: give --dimensions (1, or more than 2); \
+             for 2D sets use --stratified MxK"
+                .to_owned(),
+        ));
+    }
     let points = match &args.file {
         Some(path) if path.as_os_str() != "-" => {
             let file = std::fs::File::open(path)
@@ -102,6 +161,73 @@ pub fn parse_grid(text: &str) -> Result<(u32, u32), String> {
         })
 }
 
+/// `--dimensions`: a whole number from 1.
+pub fn parse_dimensions(text: &str) -> Result<usize, String> {
+    match shared::whole_number(text)? {
+        0 => Err("a point has at least 1 dimension, got 0".to_owned()),
+        d => Ok(d as usize),
+    }
+}
+
+/// `--levels`: a whole number from 1.
+pub fn parse_levels(text: &str) -> Result<u32, String> {
+    match shared::whole_number(text)? {
+        0 => Err("a projection has at least 1 level per dimension, got 0".to_owned()),
+        q => Ok(q),
+    }
+}
+
+/// `--strength`: 1 to 4.
+pub fn parse_strength(text: &str) -> Result<usize, String> {
+    match shared::whole_number(text)? {
+        t @ 1..=4 => Ok(t as usize),
+        t => Err(format!(
+            "projections of 1 to 4 dimensions are checked, got {t}"
+        )),
+    }
+}
+
+/// Where [`read_records`] puts each line's numbers.
+pub trait Records {
+    /// Room for `additional` more lines.
+    fn reserve(&mut self, additional: usize);
+    /// One line's numbers, as many as the reader was asked for.
+    fn push(&mut self, values: &[f32]);
+    /// Whether no line was pushed.
+    fn is_empty(&self) -> bool;
+}
+
+impl Records for Vec<Vec2> {
+    fn reserve(&mut self, additional: usize) {
+        self.reserve_exact(additional);
+    }
+    fn push(&mut self, values: &[f32]) {
+        Vec::push(self, Vec2::new(values[0], values[1]));
+    }
+    fn is_empty(&self) -> bool {
+        Vec::is_empty(self)
+    }
+}
+
+/// The points of an N-dimensional set, `dimensions` values each, flat.
+#[derive(Debug)]
+pub struct Rows {
+    pub dimensions: usize,
+    pub values: Vec<f32>,
+}
+
+impl Records for Rows {
+    fn reserve(&mut self, additional: usize) {
+        self.values.reserve_exact(additional * self.dimensions);
+    }
+    fn push(&mut self, values: &[f32]) {
+        self.values.extend_from_slice(values);
+    }
+    fn is_empty(&self) -> bool {
+        self.values.is_empty()
+    }
+}
+
 /// Why [`read_points`] stopped.
 #[derive(Debug)]
 pub enum ReadError {
@@ -127,8 +253,19 @@ pub const QUOTE: usize = 80;
 /// size in bytes, 0 if unknown) sizes the point buffer once the first lines
 /// show the typical line length.
 pub fn read_points(reader: &mut dyn BufRead, size_hint: u64) -> Result<Vec<Vec2>, ReadError> {
-    const SAMPLE_LINES: usize = 1024;
     let mut points = Vec::new();
+    read_records(reader, size_hint, 2, &mut points)?;
+    Ok(points)
+}
+
+/// [`read_points`] for lines of `dimensions` numbers each, into `points`.
+pub fn read_records(
+    reader: &mut dyn BufRead,
+    size_hint: u64,
+    dimensions: usize,
+    points: &mut dyn Records,
+) -> Result<(), ReadError> {
+    const SAMPLE_LINES: usize = 1024;
     let mut line = Vec::with_capacity(MAX_LINE);
     let mut header_allowed = true;
     let mut bytes_read = 0u64;
@@ -141,7 +278,7 @@ pub fn read_points(reader: &mut dyn BufRead, size_hint: u64) -> Result<Vec<Vec2>
             // Room for the rest at the mean line length so far, plus 1%.
             let mean = (bytes_read / SAMPLE_LINES as u64).max(1);
             let rest = (size_hint - bytes_read) / mean;
-            points.reserve_exact((rest + rest / 100) as usize);
+            points.reserve((rest + rest / 100) as usize);
         }
         let mut bytes = &line[..];
         if number == 1 {
@@ -174,16 +311,26 @@ pub fn read_points(reader: &mut dyn BufRead, size_hint: u64) -> Result<Vec<Vec2>
             continue;
         }
         let header = std::mem::replace(&mut header_allowed, false);
-        if let Some(point) = parse_line(number, text, header)? {
-            points.push(point);
+        if let Some(point) = parse_line(number, text, header, dimensions)? {
+            points.push(&point);
         }
     }
     if points.is_empty() {
-        return Err(ReadError::Input(
-            "no points in the input (expected `x,y` lines)".to_owned(),
-        ));
+        return Err(ReadError::Input(format!(
+            "no points in the input (expected {} lines)",
+            expected(dimensions)
+        )));
     }
-    Ok(points)
+    Ok(())
+}
+
+/// What a line should hold, for messages: `` `x,y` `` or `` `d` numbers ``.
+fn expected(dimensions: usize) -> String {
+    if dimensions == 2 {
+        "`x,y`".to_owned()
+    } else {
+        format!("{dimensions}-number")
+    }
 }
 
 /// Reads one line without its `\n` into `line`, keeping at most
@@ -225,7 +372,12 @@ fn quote(text: &str) -> String {
 
 /// One non-blank line: `Ok(None)` for the header (a first line with no
 /// numeric field, when `header_allowed`), else its point or a one-line error.
-fn parse_line(number: usize, line: &str, header_allowed: bool) -> Result<Option<Vec2>, ReadError> {
+fn parse_line(
+    number: usize,
+    line: &str,
+    header_allowed: bool,
+    dimensions: usize,
+) -> Result<Option<Vec<f32>>, ReadError> {
     // Each field trimmed, with the 1-based column where it starts.
     let mut fields = Vec::new();
     let mut start = 0;
@@ -238,20 +390,32 @@ fn parse_line(number: usize, line: &str, header_allowed: bool) -> Result<Option<
     if header_allowed && fields.iter().all(|(_, f)| f.parse::<f64>().is_err()) {
         return Ok(None);
     }
-    let [(x_column, x), (y_column, y)] = fields[..] else {
-        let column = match fields.get(2) {
+    if fields.len() != dimensions {
+        let column = match fields.get(dimensions) {
             Some(&(column, _)) => column,
             None => line.trim_end().chars().count() + 1,
         };
+        let what = if dimensions == 2 {
+            "`x,y` (two numbers)".to_owned()
+        } else {
+            format!("{dimensions} numbers")
+        };
         return Err(ReadError::Input(format!(
-            "line {number}, column {column}: expected `x,y` (two numbers), got {} fields in `{}`",
+            "line {number}, column {column}: expected {what}, got {} fields in `{}`",
             fields.len(),
             quote(line.trim())
         )));
-    };
-    let x = coordinate(number, x_column, "x", x).map_err(ReadError::Input)?;
-    let y = coordinate(number, y_column, "y", y).map_err(ReadError::Input)?;
-    Ok(Some(Vec2::new(x, y)))
+    }
+    let mut values = Vec::with_capacity(dimensions);
+    for (k, &(column, text)) in fields.iter().enumerate() {
+        let axis = match (dimensions, k) {
+            (2, 0) => "x".to_owned(),
+            (2, _) => "y".to_owned(),
+            _ => format!("dimension {k}"),
+        };
+        values.push(coordinate(number, column, &axis, text).map_err(ReadError::Input)?);
+    }
+    Ok(Some(values))
 }
 
 /// One coordinate read as f32 and checked to be in [0, 1).
@@ -363,4 +527,91 @@ pub fn report(points: &[Vec2], grid: Option<(u32, u32)>) -> Result<String, Strin
         .map(|(k, v)| format!("\"{k}\": {v}"))
         .collect();
     Ok(format!("{{{}}}", body.join(", ")))
+}
+
+/// The JSON object of an N-dimensional set (see the help): Latin in every
+/// dimension, and with `levels`, stratification of every projection onto
+/// 1 to `strength` dimensions, each check exact on the f32 values.
+pub fn report_nd(rows: &Rows, levels: Option<u32>, strength: usize) -> Result<String, String> {
+    let d = rows.dimensions;
+    let n = rows.values.len() / d;
+    let point = |i: usize| &rows.values[i * d..(i + 1) * d];
+    // `x` has at most 24 significant bits and the counts are below 2^29,
+    // so the f64 product is exact.
+    let stratum = |x: f32, parts: u64| (f64::from(x) * parts as f64).floor() as u64;
+    let mut fields: Vec<(String, String)> = vec![
+        ("n".to_owned(), n.to_string()),
+        ("dimensions".to_owned(), d.to_string()),
+    ];
+    let non_latin = (0..d).find(|&k| {
+        let mut seen = vec![false; n];
+        (0..n).any(|i| std::mem::replace(&mut seen[stratum(point(i)[k], n as u64) as usize], true))
+    });
+    fields.push(("is_latin".to_owned(), non_latin.is_none().to_string()));
+    fields.push((
+        "non_latin_dimension".to_owned(),
+        non_latin.map_or_else(|| "null".to_owned(), |k| k.to_string()),
+    ));
+    if let Some(q) = levels {
+        for k in 1..=strength {
+            let cells = u64::from(q)
+                .checked_pow(k as u32)
+                .filter(|&c| c <= n as u64);
+            let (stratified, first) = match cells {
+                Some(cells) if (n as u64).is_multiple_of(cells) => {
+                    let each = n as u64 / cells;
+                    let first = subsets(d, k).find(|dims| {
+                        let mut counts = vec![0u64; cells as usize];
+                        for i in 0..n {
+                            let cell = dims.iter().fold(0, |cell, &j| {
+                                cell * u64::from(q) + stratum(point(i)[j], u64::from(q))
+                            });
+                            counts[cell as usize] += 1;
+                        }
+                        counts.iter().any(|&c| c != each)
+                    });
+                    let shown = first.as_ref().map_or_else(
+                        || "null".to_owned(),
+                        |dims| {
+                            let list: Vec<String> = dims.iter().map(usize::to_string).collect();
+                            format!("[{}]", list.join(","))
+                        },
+                    );
+                    (
+                        if k <= d {
+                            first.is_none().to_string()
+                        } else {
+                            "null".to_owned()
+                        },
+                        shown,
+                    )
+                }
+                _ => ("null".to_owned(), "null".to_owned()),
+            };
+            fields.push((format!("stratified_{k}d"), stratified));
+            fields.push((format!("unstratified_{k}d"), first));
+        }
+    }
+    let body: Vec<String> = fields
+        .iter()
+        .map(|(k, v)| format!("\"{k}\": {v}"))
+        .collect();
+    Ok(format!("{{{}}}", body.join(", ")))
+}
+
+/// Every set of `k` distinct dimensions below `d`, as increasing lists.
+fn subsets(d: usize, k: usize) -> impl Iterator<Item = Vec<usize>> {
+    let mut next = (k <= d).then(|| (0..k).collect::<Vec<usize>>());
+    std::iter::from_fn(move || {
+        let current = next.take()?;
+        let mut pick = current.clone();
+        if let Some(i) = (0..k).rev().find(|&i| pick[i] < d - k + i) {
+            pick[i] += 1;
+            for j in i + 1..k {
+                pick[j] = pick[j - 1] + 1;
+            }
+            next = Some(pick);
+        }
+        Some(current)
+    })
 }

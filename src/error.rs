@@ -42,6 +42,52 @@ pub enum Error {
         /// Rows of the grid.
         rows: u32,
     },
+    /// More samples than an N-dimensional point set
+    /// ([`LatinHypercube`](crate::LatinHypercube)) can keep its guarantee
+    /// for.
+    TooManyNdSamples {
+        /// The sampler, as the docs name it.
+        sampler: &'static str,
+        /// How many were asked for.
+        requested: u32,
+        /// The largest count the sampler accepts.
+        max: u32,
+        /// Why the limit exists.
+        reason: &'static str,
+    },
+    /// An N-dimensional point set was asked for 0 dimensions, or more than
+    /// it can make.
+    DimensionsOutOfRange {
+        /// The sampler, as the docs name it.
+        sampler: &'static str,
+        /// Dimensions asked for.
+        dimensions: u32,
+        /// The most dimensions it accepts (at this sample count).
+        max: u32,
+        /// Why the limit exists.
+        reason: &'static str,
+    },
+    /// An [`OrthogonalArray`](crate::OrthogonalArray) of a strength other
+    /// than 2, 3 or 4.
+    StrengthOutOfRange {
+        /// The strength asked for.
+        strength: u32,
+    },
+    /// An [`OrthogonalArray`](crate::OrthogonalArray) was asked for a count
+    /// that is not `q^strength` for a prime power `q` (at most 2^24
+    /// samples): the arrays have no other sizes, and rounding silently
+    /// would change the caller's sample budget.
+    NotOrthogonalArraySize {
+        /// Samples asked for.
+        n: u32,
+        /// The strength asked for.
+        strength: u32,
+        /// The largest valid count below `n`, if any
+        /// ([`OrthogonalArray::nearest_sizes`](crate::OrthogonalArray::nearest_sizes)).
+        below: Option<u32>,
+        /// The smallest valid count above `n`, if any.
+        above: Option<u32>,
+    },
     /// A metric was given no points.
     EmptyPointSet,
     /// A metric was given a point with a NaN or infinite coordinate.
@@ -229,6 +275,55 @@ impl fmt::Display for Error {
                  1 x n); pick an n with a divisor near its square root, give the grid shape \
                  yourself, or use a sequence (sobol, pmj02) that takes any n"
             ),
+            Error::TooManyNdSamples {
+                sampler,
+                requested,
+                max,
+                reason,
+            } => write!(
+                f,
+                "{sampler} accepts at most {max} samples, got {requested}: {reason}"
+            ),
+            Error::DimensionsOutOfRange {
+                sampler,
+                dimensions: 0,
+                max,
+                ..
+            } => write!(
+                f,
+                "{sampler} makes 1 to {max} dimensions, got 0: ask for at least one"
+            ),
+            Error::DimensionsOutOfRange {
+                sampler,
+                dimensions,
+                max,
+                reason,
+            } => write!(
+                f,
+                "{sampler} makes 1 to {max} dimensions, got {dimensions}: {reason}"
+            ),
+            Error::StrengthOutOfRange { strength } => write!(
+                f,
+                "an orthogonal array has strength 2, 3 or 4, got {strength}; strength 1 is a \
+                 Latin hypercube (LatinHypercube)"
+            ),
+            Error::NotOrthogonalArraySize {
+                n,
+                strength,
+                below,
+                above,
+            } => {
+                write!(
+                    f,
+                    "an orthogonal array of strength {strength} has q^{strength} samples for a \
+                     prime power q (at most 2^24 samples), and {n} is not one; use "
+                )?;
+                match (below, above) {
+                    (Some(below), Some(above)) => write!(f, "{below} or {above}"),
+                    (Some(only), None) | (None, Some(only)) => write!(f, "{only}"),
+                    (None, None) => f.write_str("another strength"),
+                }
+            }
             Error::EmptyPointSet => {
                 f.write_str("a metric needs at least one point; got an empty set")
             }

@@ -15,6 +15,12 @@
 //! rendering any tile gets the same sample. Every coordinate is in `[0, 1)`
 //! after f32 rounding.
 //!
+//! Point sets whose guarantees span more dimensions implement [`SamplerNd`]
+//! (any coordinate of any sample in O(1)): [`LatinHypercube`] (every 1D
+//! projection stratified, any number of dimensions) and
+//! [`OrthogonalArray`] (every 2D, 3D or 4D projection stratified, at
+//! `q^t` samples for a prime power `q`).
+//!
 //! ```
 //! use wellspread::{CorrelatedMultiJittered, Sampler2D, pattern_seed};
 //!
@@ -142,9 +148,10 @@ pub use pixel::{
 pub use primitives::pattern_seed;
 pub use samplers::{
     AnySampler, BlueMultiJittered, CorrelatedMultiJittered, Halton, Hammersley, Jittered,
-    LatinHypercube, MultiJittered, NRooks, Pmj02, Random, Regular, SamplerKind, Sobol,
+    LatinHypercube, MultiJittered, NRooks, OrthogonalArray, OrthogonalArrayOffset, Pmj02, Random,
+    Regular, SamplerKind, Sobol,
 };
-pub use traits::{DomainSampler, Sampler2D, Sequence2D, second_stream, stratified_1d};
+pub use traits::{DomainSampler, Sampler2D, SamplerNd, Sequence2D, second_stream, stratified_1d};
 
 // The README's usage example runs as a doctest.
 #[cfg(doctest)]

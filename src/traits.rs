@@ -1,7 +1,8 @@
-//! The traits of the samplers ([`Sampler2D`] for every one, [`Sequence2D`]
-//! for the progressive sequences, [`DomainSampler`] for the draws a
-//! [`Padded`](crate::Padded) pixel sampler makes through them, the
-//! crate-private `FillOn`) and the checks and draws their methods share.
+//! The traits of the samplers ([`Sampler2D`] for every 2D one, [`Sequence2D`]
+//! for the progressive sequences, [`SamplerNd`] for the point sets of many
+//! dimensions, [`DomainSampler`] for the draws a [`Padded`](crate::Padded)
+//! pixel sampler makes through a 2D sampler, the crate-private `FillOn`)
+//! and the checks and draws their methods share.
 
 use glam::{Vec2, Vec3, Vec4};
 
@@ -65,6 +66,71 @@ pub trait Sampler2D {
         check_fill_len(out.len(), self.len());
         for (index, point) in (0..).zip(out.iter_mut()) {
             *point = self.sample(index, pattern);
+        }
+    }
+}
+
+/// A set of `len()` well-distributed points in `[0, 1)^d`, `d =
+/// dimensions()`, with random access to every coordinate: the point sets
+/// whose guarantees span more than two dimensions
+/// ([`LatinHypercube`](crate::LatinHypercube),
+/// [`OrthogonalArray`](crate::OrthogonalArray)).
+///
+/// The contract is [`Sampler2D`]'s, one coordinate at a time: coordinate
+/// `dimension` of sample `index` of pattern `pattern` is a pure function of
+/// the three, computed in O(1) with no state, no tables and no allocation,
+/// and it is in `[0, 1)` after f32 rounding. `pattern` picks one of 2^32
+/// independent randomisations of the whole set, all its dimensions at once:
+/// the stratification that ties dimensions together (every 2D projection
+/// of an orthogonal array of strength 2, say) holds within one pattern.
+///
+/// ```
+/// use wellspread::{LatinHypercube, SamplerNd};
+/// let cube = LatinHypercube::new(10, 5)?;
+/// let mut point = [0.0; 5];
+/// cube.sample(3, 7, &mut point);
+/// assert_eq!(point[4], cube.coordinate(3, 7, 4));
+/// assert!(point.iter().all(|x| (0.0..1.0).contains(x)));
+/// # Ok::<(), wellspread::Error>(())
+/// ```
+pub trait SamplerNd {
+    /// Number of samples in one pattern.
+    fn len(&self) -> u32;
+
+    /// Always `false`: constructors reject zero samples. Present because
+    /// clippy and readers expect `is_empty` beside `len`.
+    fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Number of coordinates of each sample, at least 1.
+    fn dimensions(&self) -> u32;
+
+    /// Coordinate `dimension` of sample `index` of pattern `pattern`, in
+    /// O(1).
+    ///
+    /// `index` must be below [`len`](SamplerNd::len) and `dimension` below
+    /// [`dimensions`](SamplerNd::dimensions) (both checked in debug
+    /// builds); each type documents what a release build returns otherwise,
+    /// and it is always a value in `[0, 1)`.
+    fn coordinate(&self, index: u32, pattern: u32, dimension: u32) -> f32;
+
+    /// Writes sample `index` of pattern `pattern` into
+    /// `out[..dimensions()]`: exactly what
+    /// [`coordinate`](SamplerNd::coordinate) returns for each dimension,
+    /// with the per-pattern and per-sample work done once. Entries of `out`
+    /// past `dimensions()` are left as they are.
+    ///
+    /// # Panics
+    ///
+    /// If `out` is shorter than [`dimensions`](SamplerNd::dimensions): a
+    /// point cut short is a caller's bug, not a request for its first
+    /// coordinates (use [`coordinate`](SamplerNd::coordinate) for those).
+    #[track_caller]
+    fn sample(&self, index: u32, pattern: u32, out: &mut [f32]) {
+        let out = check_nd_out(out, self.dimensions());
+        for (dimension, x) in (0..).zip(out.iter_mut()) {
+            *x = self.coordinate(index, pattern, dimension);
         }
     }
 }
@@ -291,4 +357,18 @@ pub(crate) fn check_fill_from(start: u32, requested: usize) {
         "fill_from asked for indices {start}..{} past the sequence's last index 4294967295",
         u64::from(start) + requested as u64
     );
+}
+
+/// The panic every [`SamplerNd::sample`] shares: `out` must hold a whole
+/// point. Returns `out[..dimensions]`.
+#[inline]
+#[track_caller]
+pub(crate) fn check_nd_out(out: &mut [f32], dimensions: u32) -> &mut [f32] {
+    let len = out.len();
+    match out.get_mut(..dimensions as usize) {
+        Some(point) => point,
+        None => panic!(
+            "SamplerNd::sample needs room for {dimensions} coordinates, got a slice of {len}"
+        ),
+    }
 }

@@ -16,6 +16,10 @@
 //! - `domains.txt`: every `PixelSamplerKind`'s draws through a `Domain`
 //!   (1D, 2D, 4D, a branch and a split) for samples `0..4`;
 //! - `primitives.txt`: hashes, permutations, unit conversions, pattern seeds.
+//! - `nd_samplers.txt`: the [`SamplerNd`] point sets (`LatinHypercube`,
+//!   `OrthogonalArray` at every strength and offset) at a few sizes,
+//!   dimension counts and patterns, samples `0..min(n, 8)`, every
+//!   coordinate.
 //!
 //! Each line holds the bits of a value (`f32::to_bits`, hex) and, for
 //! reading only, its decimal value. A kind without its lines fails
@@ -40,7 +44,10 @@ use wellspread::glam::Vec2;
 use wellspread::primitives::{
     hash_combine, hash_u32, pattern_seed, permute, rand_u32, stratum_to_unit_f32, u32_to_unit_f32,
 };
-use wellspread::{PixelSampler, PixelSamplerKind, Sampler2D, SamplerKind, ZSobol};
+use wellspread::{
+    LatinHypercube, OrthogonalArray, OrthogonalArrayOffset, PixelSampler, PixelSamplerKind,
+    Sampler2D, SamplerKind, SamplerNd, ZSobol,
+};
 
 /// The (n, pattern) pairs every sampler is pinned at: n = 1 at both pattern
 /// extremes, a 4 x 4 square, a 4 x 6 non-square and the prime 97.
@@ -69,6 +76,7 @@ const SAMPLERS: &str = include_str!("golden/samplers.txt");
 const PIXEL_SAMPLERS: &str = include_str!("golden/pixel_samplers.txt");
 const PRIMITIVES: &str = include_str!("golden/primitives.txt");
 const DOMAINS: &str = include_str!("golden/domains.txt");
+const ND_SAMPLERS: &str = include_str!("golden/nd_samplers.txt");
 
 /// True when the tests should rewrite the files instead of comparing.
 fn blessing() -> bool {
@@ -172,6 +180,69 @@ fn domains_text() -> String {
                     hex(&split.to_array()),
                 )
                 .unwrap();
+            }
+        }
+    }
+    text
+}
+
+/// The N-dimensional cases: `(n, dimensions, pattern)` for the Latin
+/// hypercube (n = 1, a power of two, a prime, a count above 4096) and
+/// `(n, dimensions, strength)` for the arrays (a prime q, q = 4 over
+/// GF(2^2), q = 3 at strength 3, q = 4 at strength 3 and 4, with every
+/// dimension an array of that size has).
+const LATIN_CASES: [(u32, u32, u32); 6] = [
+    (1, 3, 0),
+    (1, 3, u32::MAX),
+    (16, 4, 0),
+    (16, 4, u32::MAX),
+    (97, 5, 0xdead_beef),
+    (4097, 2, 0),
+];
+const ARRAY_CASES: [(u32, u32, u32); 6] = [
+    (4, 3, 2),
+    (16, 5, 2),
+    (25, 6, 2),
+    (27, 4, 3),
+    (64, 5, 3),
+    (256, 5, 4),
+];
+
+/// `nd_samplers.txt` as the implementation computes it now: one line per
+/// sample, `name n dimensions [strength offset] pattern index: bits...`,
+/// through `SamplerNd::sample`.
+fn nd_samplers_text() -> String {
+    let mut text = String::from(HEADER);
+    text +=
+        "# sampler n dimensions [strength offset] pattern index: every coordinate as f32 bits\n";
+    let mut write = |label: String, sampler: &dyn SamplerNd, pattern: u32| {
+        let mut point = vec![f32::NAN; sampler.dimensions() as usize];
+        for index in 0..sampler.len().min(PINNED) {
+            sampler.sample(index, pattern, &mut point);
+            let bits: Vec<String> = point
+                .iter()
+                .map(|x| format!("{:08x}", x.to_bits()))
+                .collect();
+            writeln!(text, "{label} {pattern:08x} {index}: {}", bits.join(" ")).unwrap();
+        }
+    };
+    for (n, d, pattern) in LATIN_CASES {
+        let cube = LatinHypercube::new(n, d).unwrap();
+        write(format!("latin-hypercube {n} {d}"), &cube, pattern);
+    }
+    for offset in [
+        OrthogonalArrayOffset::Jittered,
+        OrthogonalArrayOffset::MultiJittered,
+        OrthogonalArrayOffset::CorrelatedMultiJittered,
+    ] {
+        for (n, d, t) in ARRAY_CASES {
+            let array = OrthogonalArray::new(n, d, t).unwrap().with_offset(offset);
+            for pattern in [0, u32::MAX] {
+                write(
+                    format!("orthogonal-array {n} {d} {t} {offset:?}"),
+                    &array,
+                    pattern,
+                );
             }
         }
     }
@@ -338,6 +409,16 @@ fn domain_draws_are_pinned() {
         return;
     }
     compare("domains.txt", DOMAINS, &computed);
+}
+
+#[test]
+fn nd_samplers_are_pinned() {
+    let computed = nd_samplers_text();
+    if blessing() {
+        bless("nd_samplers.txt", &computed);
+        return;
+    }
+    compare("nd_samplers.txt", ND_SAMPLERS, &computed);
 }
 
 #[test]

@@ -416,3 +416,154 @@ fn a_long_bad_argument_is_quoted_to_80_characters() {
     );
     assert!(err.len() < 300, "{} bytes", err.len());
 }
+
+/// The CSV of `points` run with `args`.
+fn points_csv(args: &[&str]) -> Vec<u8> {
+    let mut csv = Vec::new();
+    points::main_with(args.iter().map(OsString::from), &mut csv).unwrap();
+    csv
+}
+
+#[test]
+fn n_dimensional_sets_are_checked_projection_by_projection() {
+    // Strength 3 at 64 = 4^3 in 5 dimensions: Latin, and every 1D, 2D and
+    // 3D projection stratified on 4 levels.
+    let csv = points_csv(&[
+        "--sampler",
+        "orthogonal",
+        "--n",
+        "64",
+        "--dimensions",
+        "5",
+        "--strength",
+        "3",
+    ]);
+    let json = ok(
+        &["--dimensions", "5", "--levels", "4", "--strength", "3"],
+        &csv,
+    );
+    let names: Vec<String> = fields(&json).into_iter().map(|(k, _)| k).collect();
+    assert_eq!(
+        names,
+        [
+            "n",
+            "dimensions",
+            "is_latin",
+            "non_latin_dimension",
+            "stratified_1d",
+            "unstratified_1d",
+            "stratified_2d",
+            "unstratified_2d",
+            "stratified_3d",
+            "unstratified_3d"
+        ]
+    );
+    for name in [
+        "is_latin",
+        "stratified_1d",
+        "stratified_2d",
+        "stratified_3d",
+    ] {
+        assert_eq!(field(&json, name), "true", "{name}: {json}");
+    }
+    assert_eq!(field(&json, "unstratified_3d"), "null");
+    // A strength-2 array of 25 points: every pair on 5 x 5, and 5^3 cells
+    // do not divide 25 (null).
+    let csv = points_csv(&["--sampler", "orthogonal", "--n", "25", "--dimensions", "6"]);
+    let json = ok(
+        &["--dimensions", "6", "--levels", "5", "--strength", "3"],
+        &csv,
+    );
+    assert_eq!(field(&json, "stratified_2d"), "true");
+    assert_eq!(field(&json, "stratified_3d"), "null");
+    // A Latin hypercube is Latin, but some pair misses cells; the first
+    // such pair is named.
+    let csv = points_csv(&[
+        "--sampler",
+        "latin-hypercube",
+        "--n",
+        "25",
+        "--dimensions",
+        "6",
+    ]);
+    let json = ok(&["--dimensions", "6", "--levels", "5"], &csv);
+    assert_eq!(field(&json, "is_latin"), "true");
+    assert_eq!(field(&json, "stratified_1d"), "true");
+    assert_eq!(field(&json, "stratified_2d"), "false");
+    assert!(field(&json, "unstratified_2d").starts_with('['), "{json}");
+    // Jittered offsets are not Latin: dimension 0 is named.
+    let csv = points_csv(&[
+        "--sampler",
+        "orthogonal",
+        "--n",
+        "25",
+        "--dimensions",
+        "3",
+        "--offset",
+        "jittered",
+    ]);
+    let json = ok(&["--dimensions", "3"], &csv);
+    assert_eq!(field(&json, "is_latin"), "false");
+    assert_eq!(field(&json, "non_latin_dimension"), "0");
+    // One dimension, by hand: 0.1 and 0.6 are Latin on 2 strata; the
+    // pair (0, 1) fills two of the four cells of 2 x 2 (one per row).
+    let json = ok(&["--dimensions", "1", "--levels", "2"], b"0.1\n0.6\n");
+    assert_eq!(field(&json, "is_latin"), "true");
+    assert_eq!(field(&json, "stratified_2d"), "null");
+    let json = ok(
+        &["--dimensions", "3", "--levels", "2", "--strength", "2"],
+        b"0.1,0.2,0.3\n0.6,0.7,0.2\n0.2,0.8,0.9\n0.7,0.3,0.6\n",
+    );
+    assert_eq!(field(&json, "stratified_2d"), "true", "{json}");
+    let json = ok(
+        &["--dimensions", "3", "--levels", "2"],
+        b"0.1,0.2,0.3\n0.6,0.7,0.2\n0.2,0.3,0.9\n0.7,0.8,0.6\n",
+    );
+    assert_eq!(field(&json, "stratified_2d"), "false", "{json}");
+    assert_eq!(field(&json, "unstratified_2d"), "[0,1]", "{json}");
+}
+
+#[test]
+fn n_dimensional_input_errors_name_the_line() {
+    for (args, input, expected) in [
+        (
+            &["--dimensions", "3"][..],
+            &b"0.1,0.2\n"[..],
+            "line 1, column 8: expected 3 numbers, got 2 fields",
+        ),
+        (
+            &["--dimensions", "3"],
+            b"0.1,0.2,1.5\n",
+            "line 1, column 9: dimension 2 = 1.5 is outside [0, 1)",
+        ),
+        (
+            &["--dimensions", "3"],
+            b"a,b,c\n",
+            "no points in the input (expected 3-number lines)",
+        ),
+        (&["--dimensions", "0"], b"", "at least 1 dimension"),
+        (
+            &["--dimensions", "3", "--strength", "5"],
+            b"",
+            "1 to 4 dimensions",
+        ),
+        (
+            &["--dimensions", "3", "--levels", "0"],
+            b"",
+            "at least 1 level",
+        ),
+        (
+            &["--levels", "4"],
+            b"0.5,0.5\n",
+            "--levels checks N-dimensional sets",
+        ),
+    ] {
+        let (status, out, err) = run(args, input);
+        assert_eq!((status, out.as_str()), (2, ""), "{args:?}: {err}");
+        assert!(
+            err.contains(expected),
+            "{args:?}: {err:?} lacks {expected:?}"
+        );
+        assert_eq!(err.lines().count(), 1, "{err:?}");
+    }
+}

@@ -44,7 +44,7 @@ fn every_sampler_name_parses_with_and_without_equals() {
             options(&["--sampler", kind.name(), "--n", "10"]),
             options(&[&format!("--sampler={kind}"), "--n=10"]),
         ] {
-            assert_eq!(o.sampler.kind(), kind);
+            assert_eq!(o.sampler.kind(), Some(kind));
             assert_eq!(o.sampler.len(), 10);
             assert_eq!((o.pattern, o.format, o.out), (0, Format::Csv, None));
         }
@@ -386,4 +386,161 @@ fn out_writes_the_file_and_io_failure_is_status_1() {
         err.starts_with("points: cannot create /nonexistent-dir/x.csv: "),
         "{err}"
     );
+}
+
+/// Points of an N-dimensional set read back as f64, one row per line.
+fn read_rows(args: &[&str]) -> Vec<Vec<f64>> {
+    output(args)
+        .lines()
+        .map(|line| line.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect()
+}
+
+#[test]
+fn n_dimensional_sets_write_one_value_per_dimension() {
+    let stratum = |v: f64, parts: u32| (v * f64::from(parts)).floor() as usize;
+    // A Latin hypercube: every column Latin.
+    let rows = read_rows(&[
+        "--sampler",
+        "latin-hypercube",
+        "--n",
+        "97",
+        "--dimensions",
+        "5",
+    ]);
+    assert_eq!(rows.len(), 97);
+    for d in 0..5 {
+        let mut seen = [false; 97];
+        for row in &rows {
+            assert_eq!(row.len(), 5);
+            assert!(!std::mem::replace(&mut seen[stratum(row[d], 97)], true));
+        }
+    }
+    // An orthogonal array of strength 3 at 64 = 4^3 in 5 dimensions: every
+    // 3D projection one point per cell of 4 x 4 x 4, every column Latin.
+    let rows = read_rows(&[
+        "--sampler",
+        "orthogonal",
+        "--n",
+        "64",
+        "--dimensions",
+        "5",
+        "--strength",
+        "3",
+        "--offset",
+        "multi-jittered",
+        "--pattern",
+        "9",
+    ]);
+    for a in 0..5 {
+        for b in a + 1..5 {
+            for c in b + 1..5 {
+                let mut seen = [false; 64];
+                for row in &rows {
+                    let cell =
+                        stratum(row[a], 4) * 16 + stratum(row[b], 4) * 4 + stratum(row[c], 4);
+                    assert!(!std::mem::replace(&mut seen[cell], true), "{a} {b} {c}");
+                }
+            }
+        }
+        let mut seen = [false; 64];
+        for row in &rows {
+            assert!(!std::mem::replace(&mut seen[stratum(row[a], 64)], true));
+        }
+    }
+    // The SVG shows the chosen projection with the q x q grid.
+    let svg = output(&[
+        "--sampler",
+        "orthogonal",
+        "--n",
+        "25",
+        "--dimensions",
+        "6",
+        "--projection",
+        "3,5",
+        "--format",
+        "svg",
+    ]);
+    assert_eq!(count(&svg, "<circle "), 25);
+    assert_eq!(lines_in_group(&svg, "coarse-grid"), 8);
+    assert_eq!(lines_in_group(&svg, "fine-grid"), 48);
+    assert!(svg.contains("6 dimensions, 3 across and 5 up"), "{svg}");
+}
+
+#[test]
+fn n_dimensional_options_are_checked() {
+    let cases: &[(&[&str], &str)] = &[
+        (
+            &["--sampler", "jittered", "--n", "4", "--dimensions", "3"],
+            "jittered is a 2D sampler",
+        ),
+        (&["--sampler", "orthogonal", "--n", "24"], "use 16 or 25"),
+        (
+            &["--sampler", "orthogonal", "--n", "25", "--dimensions", "7"],
+            "makes 1 to 6 dimensions",
+        ),
+        (
+            &["--sampler", "orthogonal", "--n", "25", "--strength", "5"],
+            "strength 2, 3 or 4",
+        ),
+        (
+            &[
+                "--sampler",
+                "latin-hypercube",
+                "--n",
+                "4",
+                "--dimensions",
+                "0",
+            ],
+            "makes 1 to 65536 dimensions",
+        ),
+        (
+            &[
+                "--sampler",
+                "latin-hypercube",
+                "--n",
+                "4",
+                "--format",
+                "svg",
+                "--projection",
+                "0,2",
+            ],
+            "two different dimensions below 2",
+        ),
+        (
+            &[
+                "--sampler",
+                "latin-hypercube",
+                "--n",
+                "4",
+                "--projection",
+                "1",
+            ],
+            "is not two dimensions I,J",
+        ),
+        (
+            &["--sampler", "latin", "--n", "4"],
+            "N-dimensional: latin-hypercube orthogonal",
+        ),
+    ];
+    for &(args, expected) in cases {
+        let (status, out, err) = tool(args);
+        assert_eq!((status, out.as_str()), (2, ""), "{args:?}: {err}");
+        assert!(
+            err.contains(expected),
+            "{args:?}: {err:?} lacks {expected:?}"
+        );
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err:?}");
+    }
+    let (_, help, _) = tool(&["--help"]);
+    for needle in [
+        "--dimensions",
+        "--strength",
+        "--offset",
+        "--projection",
+        "latin-hypercube",
+        "orthogonal",
+    ] {
+        assert!(help.contains(needle), "help lacks {needle}");
+    }
 }

@@ -7,7 +7,10 @@ use std::io::{self, BufWriter, Write};
 use std::path::PathBuf;
 
 use clap::{Parser, ValueEnum};
-use wellspread::{AnySampler, Sampler2D, SamplerKind};
+use wellspread::{
+    AnySampler, LatinHypercube, OrthogonalArray, OrthogonalArrayOffset, Sampler2D, SamplerKind,
+    SamplerNd,
+};
 
 #[path = "../shared/cli.rs"]
 pub mod shared;
@@ -18,14 +21,27 @@ use shared::Failure;
 #[derive(Parser, Debug)]
 pub struct Args {
     /// Sampler name, one of those listed below
-    #[arg(long, value_name = "NAME", value_parser = shared::sampler_kind)]
-    pub sampler: SamplerKind,
+    #[arg(long, value_name = "NAME", value_parser = sampler_name)]
+    pub sampler: SamplerName,
     /// Number of points, from 1 to the sampler's limit
     #[arg(long, value_name = "N", allow_negative_numbers = true, value_parser = shared::whole_number)]
     pub n: u32,
     /// Which randomisation, decimal or 0x hex
     #[arg(long, value_name = "P", default_value = "0", value_parser = shared::u32_dec_or_hex)]
     pub pattern: u32,
+    /// Coordinates per point: 2 for the 2D samplers; 1 to the set's limit
+    /// for latin-hypercube and orthogonal
+    #[arg(long, value_name = "D", default_value = "2", value_parser = shared::whole_number)]
+    pub dimensions: u32,
+    /// Strength of an orthogonal array: 2, 3 or 4
+    #[arg(long, value_name = "T", default_value = "2", value_parser = shared::whole_number)]
+    pub strength: u32,
+    /// Offsets of an orthogonal array
+    #[arg(long, value_enum, default_value_t = Offset::CorrelatedMultiJittered)]
+    pub offset: Offset,
+    /// The two dimensions an svg of latin-hypercube or orthogonal shows
+    #[arg(long, value_name = "I,J", default_value = "0,1", value_parser = projection)]
+    pub projection: Projection,
     /// Output format (see below)
     #[arg(long, value_enum, default_value_t = Format::Csv)]
     pub format: Format,
@@ -39,16 +55,145 @@ pub fn after_help() -> String {
     format!(
         "\
 Samplers: {}
+N-dimensional sets (with --dimensions): {}
 
-Output: csv (default) is one `x,y` line per point, no header. Each value is
-the shortest decimal of the f32 widened to f64, so f32 and f64 parsers
-(Rust, numpy, pandas) both read back the exact f32 the sampler returned.
-svg is the unit square with the sampler's strata and the points, y up.
+Output: csv (default) is one `x,y` line per point (one value per dimension
+for latin-hypercube and orthogonal), no header. Each value is the shortest
+decimal of the f32 widened to f64, so f32 and f64 parsers (Rust, numpy,
+pandas) both read back the exact f32 the sampler returned. svg is the unit
+square with the sampler's strata and the points, y up (for an
+N-dimensional set, the --projection pair of dimensions).
 
 {}",
         shared::sampler_names(),
+        ND_NAMES.join(" "),
         shared::EXIT_CODES
     )
+}
+
+/// The N-dimensional sets the tool writes besides the [`SamplerKind`]s.
+pub const ND_NAMES: [&str; 2] = ["latin-hypercube", "orthogonal"];
+
+/// What `--sampler` names: a 2D sampler or an N-dimensional set.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SamplerName {
+    /// A [`SamplerKind`].
+    Plane(SamplerKind),
+    /// [`LatinHypercube`].
+    LatinHypercube,
+    /// [`OrthogonalArray`].
+    Orthogonal,
+}
+
+/// `--sampler`'s parser: a [`SamplerKind`] name or one of [`ND_NAMES`].
+pub fn sampler_name(name: &str) -> Result<SamplerName, String> {
+    match name {
+        "latin-hypercube" => Ok(SamplerName::LatinHypercube),
+        "orthogonal" => Ok(SamplerName::Orthogonal),
+        _ => shared::sampler_kind(name)
+            .map(SamplerName::Plane)
+            .map_err(|e| format!("{e}, or N-dimensional: {}", ND_NAMES.join(" "))),
+    }
+}
+
+/// `--offset`: [`OrthogonalArrayOffset`] by name.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Offset {
+    /// Jittered inside each level's stratum
+    Jittered,
+    /// Latin in every dimension, a sub-stratum order per level
+    MultiJittered,
+    /// Latin in every dimension, one sub-stratum order per dimension
+    CorrelatedMultiJittered,
+}
+
+impl From<Offset> for OrthogonalArrayOffset {
+    fn from(offset: Offset) -> Self {
+        match offset {
+            Offset::Jittered => Self::Jittered,
+            Offset::MultiJittered => Self::MultiJittered,
+            Offset::CorrelatedMultiJittered => Self::CorrelatedMultiJittered,
+        }
+    }
+}
+
+/// `--projection`: two dimension indices.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Projection(pub [u32; 2]);
+
+/// `--projection`'s parser: `I,J`, two whole numbers.
+pub fn projection(text: &str) -> Result<Projection, String> {
+    let (i, j) = text
+        .split_once(',')
+        .ok_or_else(|| format!("{} is not two dimensions I,J", shared::quoted(text)))?;
+    Ok(Projection([
+        shared::whole_number(i)?,
+        shared::whole_number(j)?,
+    ]))
+}
+
+/// An N-dimensional set the tool writes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum NdSet {
+    LatinHypercube(LatinHypercube),
+    Orthogonal(OrthogonalArray),
+}
+
+impl SamplerNd for NdSet {
+    fn len(&self) -> u32 {
+        match self {
+            NdSet::LatinHypercube(s) => s.len(),
+            NdSet::Orthogonal(s) => s.len(),
+        }
+    }
+
+    fn dimensions(&self) -> u32 {
+        match self {
+            NdSet::LatinHypercube(s) => s.dimensions(),
+            NdSet::Orthogonal(s) => s.dimensions(),
+        }
+    }
+
+    fn coordinate(&self, index: u32, pattern: u32, dimension: u32) -> f32 {
+        match self {
+            NdSet::LatinHypercube(s) => s.coordinate(index, pattern, dimension),
+            NdSet::Orthogonal(s) => s.coordinate(index, pattern, dimension),
+        }
+    }
+
+    fn sample(&self, index: u32, pattern: u32, out: &mut [f32]) {
+        match self {
+            NdSet::LatinHypercube(s) => s.sample(index, pattern, out),
+            NdSet::Orthogonal(s) => s.sample(index, pattern, out),
+        }
+    }
+}
+
+/// The set the tool writes: a 2D sampler or an N-dimensional set.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum PointSet {
+    Plane(AnySampler),
+    Nd(NdSet),
+}
+
+// Read by tests/points_cli.rs, not by the tool itself.
+#[allow(dead_code)]
+impl PointSet {
+    /// Number of points.
+    pub fn len(&self) -> u32 {
+        match self {
+            PointSet::Plane(s) => s.len(),
+            PointSet::Nd(s) => s.len(),
+        }
+    }
+
+    /// The 2D sampler's kind, if it is one.
+    pub fn kind(&self) -> Option<SamplerKind> {
+        match self {
+            PointSet::Plane(s) => Some(s.kind()),
+            PointSet::Nd(_) => None,
+        }
+    }
 }
 
 /// Output format.
@@ -63,7 +208,8 @@ pub enum Format {
 /// A checked command line.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Options {
-    pub sampler: AnySampler,
+    pub sampler: PointSet,
+    pub projection: [u32; 2],
     pub pattern: u32,
     pub format: Format,
     pub out: Option<PathBuf>,
@@ -78,12 +224,51 @@ pub fn parse<I: IntoIterator<Item = OsString>>(
     let Some(args) = shared::parse::<Args>("points", &after_help(), args, help_out)? else {
         return Ok(None);
     };
-    let sampler = args
-        .sampler
-        .build(args.n)
-        .map_err(|e| Failure::Input(format!("--n {}: {e}", args.n)))?;
+    let n = args.n;
+    let d = args.dimensions;
+    let sampler = match args.sampler {
+        SamplerName::Plane(kind) => {
+            if d != 2 {
+                return Err(Failure::Input(format!(
+                    "--dimensions {d}: {kind} is a 2D sampler; N-dimensional: {}",
+                    ND_NAMES.join(" ")
+                )));
+            }
+            PointSet::Plane(
+                kind.build(n)
+                    .map_err(|e| Failure::Input(format!("--n {n}: {e}")))?,
+            )
+        }
+        SamplerName::LatinHypercube => PointSet::Nd(NdSet::LatinHypercube(
+            LatinHypercube::new(n, d)
+                .map_err(|e| Failure::Input(format!("--n {n} --dimensions {d}: {e}")))?,
+        )),
+        SamplerName::Orthogonal => PointSet::Nd(NdSet::Orthogonal(
+            OrthogonalArray::new(n, d, args.strength)
+                .map_err(|e| {
+                    Failure::Input(format!(
+                        "--n {n} --dimensions {d} --strength {}: {e}",
+                        args.strength
+                    ))
+                })?
+                .with_offset(args.offset.into()),
+        )),
+    };
+    let projection = args.projection.0;
+    if let PointSet::Nd(set) = sampler
+        && args.format == Format::Svg
+        && (projection[0] >= d || projection[1] >= d || projection[0] == projection[1])
+    {
+        return Err(Failure::Input(format!(
+            "--projection {},{}: two different dimensions below {}",
+            projection[0],
+            projection[1],
+            set.dimensions()
+        )));
+    }
     Ok(Some(Options {
         sampler,
+        projection,
         pattern: args.pattern,
         format: args.format,
         out: args.out,
@@ -127,9 +312,63 @@ pub fn run(options: &Options, stdout: &mut dyn Write) -> Result<(), Failure> {
 
 /// Writes the set in the chosen format.
 pub fn write_points(options: &Options, out: &mut dyn Write) -> io::Result<()> {
-    match options.format {
-        Format::Csv => write_csv(&options.sampler, options.pattern, out),
-        Format::Svg => write_svg(&options.sampler, options.pattern, out),
+    let pattern = options.pattern;
+    match (options.format, &options.sampler) {
+        (Format::Csv, PointSet::Plane(sampler)) => write_csv(sampler, pattern, out),
+        (Format::Csv, PointSet::Nd(set)) => write_csv_nd(set, pattern, out),
+        (Format::Svg, PointSet::Plane(sampler)) => {
+            let picture = Picture {
+                title: format!(
+                    "{}, n = {}, pattern {pattern:#x}",
+                    sampler.kind(),
+                    sampler.len()
+                ),
+                n: sampler.len(),
+                strata: strata(sampler),
+            };
+            write_svg(&picture, |index| sampler.sample(index, pattern).into(), out)
+        }
+        (Format::Svg, PointSet::Nd(set)) => {
+            let [i, j] = options.projection;
+            let (name, strata) = match set {
+                NdSet::LatinHypercube(_) => (
+                    "latin-hypercube".to_owned(),
+                    Strata {
+                        coarse: None,
+                        rooks: true,
+                    },
+                ),
+                NdSet::Orthogonal(array) => (
+                    format!(
+                        "orthogonal (strength {}, {:?})",
+                        array.strength(),
+                        array.offset()
+                    ),
+                    Strata {
+                        coarse: Some((array.levels(), array.levels())),
+                        rooks: array.offset() != OrthogonalArrayOffset::Jittered,
+                    },
+                ),
+            };
+            let picture = Picture {
+                title: format!(
+                    "{name}, n = {}, {} dimensions, {i} across and {j} up, pattern {pattern:#x}",
+                    set.len(),
+                    set.dimensions()
+                ),
+                n: set.len(),
+                strata,
+            };
+            let mut point = vec![0.0; set.dimensions() as usize];
+            write_svg(
+                &picture,
+                |index| {
+                    set.sample(index, pattern, &mut point);
+                    [point[i as usize], point[j as usize]]
+                },
+                out,
+            )
+        }
     }
 }
 
@@ -137,6 +376,24 @@ fn write_csv(sampler: &AnySampler, pattern: u32, out: &mut dyn Write) -> io::Res
     for index in 0..sampler.len() {
         let p = sampler.sample(index, pattern);
         writeln!(out, "{},{}", csv_value(p.x), csv_value(p.y))?;
+    }
+    Ok(())
+}
+
+/// One line per point, one value per dimension.
+fn write_csv_nd(set: &NdSet, pattern: u32, out: &mut dyn Write) -> io::Result<()> {
+    let mut point = vec![0.0; set.dimensions() as usize];
+    let mut line = String::new();
+    for index in 0..set.len() {
+        set.sample(index, pattern, &mut point);
+        line.clear();
+        for (k, &x) in point.iter().enumerate() {
+            if k > 0 {
+                line.push(',');
+            }
+            line += &csv_value(x);
+        }
+        writeln!(out, "{line}")?;
     }
     Ok(())
 }
@@ -186,16 +443,26 @@ pub const MAX_COARSE_LINES: u32 = 256;
 const SIDE: f64 = 512.0;
 const MARGIN: f64 = 16.0;
 
-fn write_svg(sampler: &AnySampler, pattern: u32, out: &mut dyn Write) -> io::Result<()> {
-    let n = sampler.len();
-    let kind = sampler.kind();
-    let strata = strata(sampler);
+/// What a picture shows besides its points.
+struct Picture {
+    title: String,
+    n: u32,
+    strata: Strata,
+}
+
+fn write_svg(
+    picture: &Picture,
+    mut point: impl FnMut(u32) -> [f32; 2],
+    out: &mut dyn Write,
+) -> io::Result<()> {
+    let n = picture.n;
+    let strata = &picture.strata;
     // Unit coordinates to SVG: x right, y up (SVG's y points down).
     let sx = |x: f64| MARGIN + x * SIDE;
     let sy = |y: f64| MARGIN + (1.0 - y) * SIDE;
     let (width, height) = (SIDE + 2.0 * MARGIN, SIDE + 2.0 * MARGIN + 40.0);
 
-    let title = format!("{kind}, n = {n}, pattern {pattern:#x}");
+    let title = picture.title.clone();
     let guarantee = match (strata.coarse, strata.rooks) {
         (Some((columns, rows)), false) => format!("one point per cell of {columns} x {rows}"),
         (Some((columns, rows)), true) => {
@@ -269,12 +536,12 @@ fn write_svg(sampler: &AnySampler, pattern: u32, out: &mut dyn Write) -> io::Res
     let radius = (SIDE / (n as f64).sqrt() / 5.0).clamp(0.75, 4.0);
     writeln!(out, r##"<g id="points" fill="#c0392b">"##)?;
     for index in 0..n {
-        let p = sampler.sample(index, pattern);
+        let [x, y] = point(index);
         writeln!(
             out,
             r#"<circle cx="{:.3}" cy="{:.3}" r="{radius:.2}"/>"#,
-            sx(p.x as f64),
-            sy(p.y as f64)
+            sx(x as f64),
+            sy(y as f64)
         )?;
     }
     writeln!(out, "</g>")?;

@@ -3,6 +3,8 @@
 //! ```sh
 //! cargo run --release --example points -- --sampler correlated-multi-jittered --n 16
 //! mkdir -p out && cargo run --release --example points -- --sampler multi-jittered --n 100 --format svg --out out/mj.svg
+//! cargo run --release --example points -- --sampler orthogonal --n 64 --dimensions 5 --strength 3
+//! cargo run --release --example points -- --sampler latin-hypercube --n 25 --dimensions 8 --format svg --projection 3,5
 //! ```
 //!
 //! Run with `--help` for every option, the output format and the exit codes.

@@ -27,7 +27,7 @@ pub use blue_multi_jittered::BlueMultiJittered;
 pub use correlated_multi_jittered::CorrelatedMultiJittered;
 pub use jittered::Jittered;
 pub use multi_jittered::MultiJittered;
-pub use n_rooks::{LatinHypercube, NRooks};
+pub use n_rooks::NRooks;
 pub use regular::Regular;
 
 use crate::primitives::{InvariantDivisor, MAX_STRATA, Permutation, derived_key, rand_u32, salt};

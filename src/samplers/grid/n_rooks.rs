@@ -57,9 +57,6 @@ pub struct NRooks {
     grid: Grid,
 }
 
-/// The statisticians' name for the same set.
-pub type LatinHypercube = NRooks;
-
 impl NRooks {
     /// The largest `n` accepted: 2^24, the number of distinct f32 strata.
     pub const MAX_SAMPLES: u32 = MAX_STRATA;

@@ -1,0 +1,386 @@
+//! The finite fields GF(q), `q = p^k` a prime power up to [`MAX_ORDER`],
+//! that the orthogonal arrays are built over: a few words per field and a
+//! few dozen integer operations per product, with no tables.
+//!
+//! An element is the integer whose base-`p` digits are the coefficients of
+//! its polynomial in `x` (digit `i` is the coefficient of `x^i`), so the
+//! elements are exactly `0..q`, `0` and `1` are the field's zero and one,
+//! and for `k = 1` the arithmetic is the integers modulo `p`. For `k > 1`
+//! products are reduced modulo the first monic irreducible polynomial of
+//! degree `k` over GF(p), in the order of its low coefficients read as a
+//! base-`p` number (for GF(4) that is `x^2 + x + 1`, for GF(8) `x^3 + x +
+//! 1`, for GF(9) `x^2 + 1`), found by trial division when the field is
+//! made.
+
+use crate::primitives::InvariantDivisor;
+
+/// The largest field order: `4096 = 2^12`, the largest `q` with `q^2` at
+/// most `2^24` (the most samples a stratified f32 axis holds).
+pub(crate) const MAX_ORDER: u32 = 4096;
+
+/// The finite field of `q = p^k` elements (see the module docs for the
+/// encoding).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(crate) struct Field {
+    /// The characteristic, a prime.
+    p: u32,
+    /// `p` with its reciprocal, so that the digit and remainder operations
+    /// multiply instead of dividing.
+    divisor: InvariantDivisor,
+    /// The degree over GF(p).
+    k: u32,
+    /// `p^(k - 1)`: the place value of the top digit.
+    top_place: u32,
+    /// `x^k` reduced modulo the field's polynomial, as an element: the
+    /// negated low coefficients of the monic modulus (0 for `k = 1`).
+    x_to_the_k: u32,
+}
+
+/// `(p, k)` with `q = p^k` and `p` prime, if `q` is a prime power (`q >= 2`).
+pub(crate) const fn prime_power(q: u32) -> Option<(u32, u32)> {
+    if q < 2 {
+        return None;
+    }
+    // The smallest divisor above 1 is prime.
+    let mut p = 2;
+    while p <= q / p && !q.is_multiple_of(p) {
+        p += 1;
+    }
+    if !q.is_multiple_of(p) {
+        p = q;
+    }
+    let (mut rest, mut k) = (q, 0);
+    while rest.is_multiple_of(p) {
+        rest /= p;
+        k += 1;
+    }
+    if rest == 1 { Some((p, k)) } else { None }
+}
+
+/// Coefficients of a polynomial over GF(p) of degree at most 12, lowest
+/// first.
+type Poly = [u32; 13];
+
+/// The polynomial whose coefficients are the base-`p` digits of `value`,
+/// `len` of them.
+const fn digits(value: u32, p: u32, len: u32) -> Poly {
+    let mut poly = [0; 13];
+    let (mut value, mut i) = (value, 0);
+    while i < len {
+        poly[i as usize] = value % p;
+        value /= p;
+        i += 1;
+    }
+    poly
+}
+
+/// Whether the monic `g` of degree `d` divides the monic `f` of degree
+/// `k >= d` over GF(p): the remainder of the long division is zero.
+const fn divides(g: &Poly, d: u32, f: &Poly, k: u32, p: u32) -> bool {
+    let mut r = *f;
+    let mut top = k;
+    while top >= d {
+        // Subtract r[top] x^(top - d) g, which clears coefficient `top`.
+        let c = r[top as usize];
+        let shift = top - d;
+        let mut j = 0;
+        while j <= d {
+            let i = (shift + j) as usize;
+            r[i] = (r[i] + (p - c) * g[j as usize]) % p;
+            j += 1;
+        }
+        top -= 1;
+    }
+    let mut i = 0;
+    while i < d {
+        if r[i as usize] != 0 {
+            return false;
+        }
+        i += 1;
+    }
+    true
+}
+
+/// Whether `x^k + low` (`low`'s base-`p` digits the coefficients of `x^0`
+/// to `x^(k - 1)`) is irreducible over GF(p): no monic divisor of degree
+/// 1 to `k / 2`.
+const fn is_irreducible(p: u32, k: u32, low: u32) -> bool {
+    let mut f = digits(low, p, k);
+    f[k as usize] = 1;
+    let mut d = 1;
+    let mut count = p;
+    while d <= k / 2 {
+        let mut g_low = 0;
+        while g_low < count {
+            let mut g = digits(g_low, p, d);
+            g[d as usize] = 1;
+            if divides(&g, d, &f, k, p) {
+                return false;
+            }
+            g_low += 1;
+        }
+        d += 1;
+        count *= p;
+    }
+    true
+}
+
+impl Field {
+    /// GF(q), if `q` is a prime power from 2 to [`MAX_ORDER`].
+    pub(crate) const fn new(q: u32) -> Option<Self> {
+        if q > MAX_ORDER {
+            return None;
+        }
+        let Some((p, k)) = prime_power(q) else {
+            return None;
+        };
+        let top_place = q / p;
+        let divisor = InvariantDivisor::new(p);
+        if k == 1 {
+            return Some(Self {
+                p,
+                divisor,
+                k,
+                top_place,
+                x_to_the_k: 0,
+            });
+        }
+        // The first irreducible modulus (one exists for every p and k).
+        let mut low = 0;
+        while !is_irreducible(p, k, low) {
+            low += 1;
+        }
+        // x^k = -(low part): negate every digit.
+        let low_digits = digits(low, p, k);
+        let (mut x_to_the_k, mut place, mut i) = (0, 1, 0);
+        while i < k {
+            x_to_the_k += (p - low_digits[i as usize]) % p * place;
+            place *= p;
+            i += 1;
+        }
+        Some(Self {
+            p,
+            divisor,
+            k,
+            top_place,
+            x_to_the_k,
+        })
+    }
+
+    /// The number of elements, `q`.
+    #[inline(always)]
+    pub(crate) const fn order(self) -> u32 {
+        self.top_place * self.p
+    }
+
+    /// `a + b` (`a, b < q`).
+    #[inline(always)]
+    pub(crate) const fn add(self, a: u32, b: u32) -> u32 {
+        if self.k == 1 {
+            let s = a + b;
+            if s >= self.p { s - self.p } else { s }
+        } else if self.p == 2 {
+            a ^ b
+        } else {
+            self.add_digits(a, b)
+        }
+    }
+
+    /// `a + b` digit by digit, for any `p`.
+    const fn add_digits(self, mut a: u32, mut b: u32) -> u32 {
+        let (mut sum, mut place, mut i) = (0, 1, 0);
+        while i < self.k {
+            let (a_rest, a_digit) = self.divisor.div_rem(a);
+            let (b_rest, b_digit) = self.divisor.div_rem(b);
+            let s = a_digit + b_digit;
+            sum += if s >= self.p { s - self.p } else { s } * place;
+            (a, b) = (a_rest, b_rest);
+            place *= self.p;
+            i += 1;
+        }
+        sum
+    }
+
+    /// `c a` for `c` in GF(p), digit by digit.
+    const fn scale_digits(self, mut a: u32, c: u32) -> u32 {
+        let (mut product, mut place, mut i) = (0, 1, 0);
+        while i < self.k {
+            let (rest, digit) = self.divisor.div_rem(a);
+            product += self.divisor.div_rem(digit * c).1 * place;
+            a = rest;
+            place *= self.p;
+            i += 1;
+        }
+        product
+    }
+
+    /// `x a`, reduced: the top digit comes back as that multiple of `x^k`.
+    const fn times_x_digits(self, a: u32) -> u32 {
+        // The top digit, and the rest shifted up one place.
+        let mut top = a;
+        let mut i = 1;
+        while i < self.k {
+            top = self.divisor.div_rem(top).0;
+            i += 1;
+        }
+        let shifted = (a - top * self.top_place) * self.p;
+        self.add_digits(shifted, self.scale_digits(self.x_to_the_k, top))
+    }
+
+    /// `a b` (`a, b < q`).
+    #[inline(always)]
+    pub(crate) const fn mul(self, a: u32, b: u32) -> u32 {
+        if self.k == 1 {
+            // a, b < 4096: the product fits in u32.
+            self.divisor.div_rem(a * b).1
+        } else if self.p == 2 {
+            self.mul_binary(a, b)
+        } else {
+            self.mul_digits(a, b)
+        }
+    }
+
+    /// `a b` in GF(2^k): carry-less shift-and-add from `b`'s top bit down,
+    /// folding `x^k` back in as `x_to_the_k`.
+    #[inline(always)]
+    const fn mul_binary(self, a: u32, b: u32) -> u32 {
+        let mut product = 0;
+        let mut i = self.k;
+        while i > 0 {
+            i -= 1;
+            let carry = product >> (self.k - 1);
+            product = ((product << 1) & (self.order() - 1)) ^ (carry * self.x_to_the_k);
+            product ^= ((b >> i) & 1) * a;
+        }
+        product
+    }
+
+    /// `a b` for any `p`, by Horner's rule on `b`'s digits from the top:
+    /// `product = x product + b_i a`.
+    const fn mul_digits(self, a: u32, b: u32) -> u32 {
+        // b's digits, lowest first.
+        let mut digits = [0; 12];
+        let (mut rest, mut i) = (b, 0);
+        while i < self.k {
+            let (next, digit) = self.divisor.div_rem(rest);
+            digits[i as usize] = digit;
+            rest = next;
+            i += 1;
+        }
+        let mut product = 0;
+        while i > 0 {
+            i -= 1;
+            product = self.times_x_digits(product);
+            product = self.add_digits(product, self.scale_digits(a, digits[i as usize]));
+        }
+        product
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every prime power the fields accept, and a few numbers that are not.
+    #[test]
+    fn prime_powers_are_recognised() {
+        assert_eq!(prime_power(0), None);
+        assert_eq!(prime_power(1), None);
+        assert_eq!(prime_power(2), Some((2, 1)));
+        assert_eq!(prime_power(4), Some((2, 2)));
+        assert_eq!(prime_power(6), None);
+        assert_eq!(prime_power(9), Some((3, 2)));
+        assert_eq!(prime_power(12), None);
+        assert_eq!(prime_power(4093), Some((4093, 1)));
+        assert_eq!(prime_power(4096), Some((2, 12)));
+        assert_eq!(prime_power(3_721), Some((61, 2)));
+        assert_eq!(prime_power(2_187), Some((3, 7)));
+        assert_eq!(prime_power(u32::MAX), None);
+        let count = (2..=MAX_ORDER).filter(|&q| Field::new(q).is_some()).count();
+        // 564 primes below 4096, and 35 higher prime powers: 2^2..2^12,
+        // 3^2..3^7, 5^2..5^5, 7^2..7^4, 11^2, 11^3, 13^2, 13^3 and the
+        // squares of the 12 primes from 17 to 61.
+        assert_eq!(count, 564 + 11 + 6 + 4 + 3 + 2 + 2 + 12);
+        assert_eq!(Field::new(MAX_ORDER + 1), None);
+    }
+
+    /// The moduli the search finds, checked by hand: GF(4) = GF(2)[x] /
+    /// (x^2 + x + 1), GF(8) with x^3 + x + 1, GF(9) = GF(3)[x] / (x^2 + 1).
+    #[test]
+    fn small_fields_multiply_as_by_hand() {
+        let gf4 = Field::new(4).unwrap();
+        // x = 2, x + 1 = 3: x^2 = x + 1, x (x + 1) = 1, (x + 1)^2 = x.
+        assert_eq!(gf4.mul(2, 2), 3);
+        assert_eq!(gf4.mul(2, 3), 1);
+        assert_eq!(gf4.mul(3, 3), 2);
+        let gf8 = Field::new(8).unwrap();
+        // x^3 = x + 1: x * x^2 = 0b011; x^2 * x^2 = x^4 = x^2 + x.
+        assert_eq!(gf8.mul(2, 4), 3);
+        assert_eq!(gf8.mul(4, 4), 6);
+        let gf9 = Field::new(9).unwrap();
+        // x = 3: x^2 = -1 = 2; (x + 1)^2 = x^2 + 2x + 1 = 2x = 6.
+        assert_eq!(gf9.mul(3, 3), 2);
+        assert_eq!(gf9.mul(4, 4), 6);
+        // (2 + x) + (1 + 2x) = 3 + 3x = 0; (2 + x) + (2 + x) = 1 + 2x.
+        assert_eq!(gf9.add(5, 7), 0);
+        assert_eq!(gf9.add(5, 5), 7);
+    }
+
+    /// Field axioms over every element of every field up to 64 elements and
+    /// of GF(2^8), GF(3^5) and GF(4096) on sampled triples: 0 and 1 are
+    /// the identities, multiplication by a nonzero element is a bijection
+    /// of the nonzero elements (so every element has an inverse, which
+    /// holds only when the modulus is irreducible), and both operations
+    /// commute, associate and distribute.
+    #[test]
+    fn fields_satisfy_the_axioms() {
+        let mut state = 0x2545_f491_u32;
+        let mut next = |q: u32| {
+            state ^= state << 13;
+            state ^= state >> 17;
+            state ^= state << 5;
+            state % q
+        };
+        for q in (2..=64).chain([81, 125, 128, 243, 256, 343, 1024, 2187, 3481, 4096]) {
+            let Some(f) = Field::new(q) else { continue };
+            assert_eq!(f.order(), q);
+            if q <= 256 {
+                for a in 1..q {
+                    let mut seen = std::vec![false; q as usize];
+                    for b in 0..q {
+                        let c = f.mul(a, b);
+                        assert!(c < q, "GF({q}): {a} {b} -> {c}");
+                        assert!(!seen[c as usize], "GF({q}): {a} x is not a bijection");
+                        seen[c as usize] = true;
+                    }
+                }
+            }
+            for _ in 0..2000 {
+                let (a, b, c) = (next(q), next(q), next(q));
+                assert_eq!(f.add(a, 0), a);
+                assert_eq!(f.mul(a, 1), a);
+                assert_eq!(f.mul(a, 0), 0);
+                assert_eq!(f.add(a, b), f.add(b, a));
+                assert_eq!(f.mul(a, b), f.mul(b, a), "GF({q}) {a} {b}");
+                assert_eq!(f.add(f.add(a, b), c), f.add(a, f.add(b, c)));
+                assert_eq!(f.mul(f.mul(a, b), c), f.mul(a, f.mul(b, c)), "GF({q})");
+                assert_eq!(
+                    f.mul(a, f.add(b, c)),
+                    f.add(f.mul(a, b), f.mul(a, c)),
+                    "GF({q})"
+                );
+                if f.p == 2 {
+                    assert_eq!(f.mul_binary(a, b), f.mul_digits(a, b), "GF({q})");
+                    assert_eq!(f.add(a, b), f.add_digits(a, b));
+                }
+            }
+            // The additive group has characteristic p: p copies of a sum to 0.
+            let a = next(q);
+            let mut sum = 0;
+            for _ in 0..f.p {
+                sum = f.add(sum, a);
+            }
+            assert_eq!(sum, 0, "GF({q})");
+        }
+    }
+}

@@ -1,0 +1,90 @@
+//! The N-dimensional family ([`LatinHypercube`], [`OrthogonalArray`]) and
+//! its core: the per-dimension keys, the salts of the per-dimension
+//! choices, and the index and dimension checks. Each sampler's file holds
+//! its constructors, its coordinate formula and its [`SamplerNd`] impl.
+//!
+//! A family of its own rather than part of `grid`: these samplers answer
+//! one coordinate at a time through [`SamplerNd`], with no `columns x
+//! rows` cells and no 2D `fill`, so none of the grid core applies; what
+//! they share is how a dimension gets its own randomisation.
+//!
+//! [`LatinHypercube`]: crate::LatinHypercube
+//! [`OrthogonalArray`]: crate::OrthogonalArray
+//! [`SamplerNd`]: crate::SamplerNd
+
+mod field;
+mod latin_hypercube;
+mod orthogonal_array;
+
+pub use latin_hypercube::LatinHypercube;
+pub use orthogonal_array::{OrthogonalArray, OrthogonalArrayOffset};
+
+use crate::Error;
+use crate::primitives::{InvariantDivisor, hash_combine};
+use crate::traits::debug_check_index;
+
+/// Salts for the per-pattern and per-dimension choices, in the style of
+/// the crate's salts: odd, about half their bits set, distinct top five
+/// bits (the rotation `derived_key` applies).
+mod salt {
+    /// The Latin hypercube's stratum permutation; the array's level
+    /// permutation.
+    pub(super) const STRATA: u32 = 0x3b9e_6d27;
+    /// The array's sub-stratum permutation (multi-jittered offsets).
+    pub(super) const SUB_STRATA: u32 = 0x7a2f_c639;
+    /// The array's choice of columns.
+    pub(super) const COLUMNS: u32 = 0x5e83_b1d5;
+    /// The array's row order.
+    pub(super) const ROWS: u32 = 0x9647_e2a9;
+    /// Where inside its stratum a coordinate lands.
+    pub(super) const JITTER: u32 = 0xd1c5_8a4b;
+}
+
+/// The key of dimension `dimension` of the pattern whose hash is
+/// `pattern_hash`: every choice made for that dimension alone is derived
+/// from it, so dimensions are as independent as two patterns.
+#[inline(always)]
+const fn dimension_key(pattern_hash: u32, dimension: u32) -> u32 {
+    hash_combine(pattern_hash, dimension)
+}
+
+/// `index`, checked against the set size in debug builds and reduced
+/// modulo it in release builds.
+#[inline(always)]
+fn reduce_index(index: u32, n: InvariantDivisor) -> u32 {
+    debug_check_index(index, n.get());
+    if index < n.get() {
+        index
+    } else {
+        n.div_rem(index).1
+    }
+}
+
+/// The dimension check every `coordinate` shares (debug builds only).
+#[inline(always)]
+fn debug_check_dimension(dimension: u32, dimensions: u32) {
+    debug_assert!(
+        dimension < dimensions,
+        "dimension {dimension} out of range 0..{dimensions}"
+    );
+}
+
+/// `Ok` if `dimensions` is from 1 to `max`, else the error naming `sampler`
+/// and `reason` (why `max` is the limit).
+fn check_dimensions(
+    sampler: &'static str,
+    dimensions: u32,
+    max: u32,
+    reason: &'static str,
+) -> Result<(), Error> {
+    if (1..=max).contains(&dimensions) {
+        Ok(())
+    } else {
+        Err(Error::DimensionsOutOfRange {
+            sampler,
+            dimensions,
+            max,
+            reason,
+        })
+    }
+}
