@@ -31,6 +31,25 @@
 //! wellspread sampler returns them. Inverses return points of `[0, 1)`,
 //! clamped to [`ONE_MINUS_EPSILON`] where rounding would reach 1.
 //!
+//! # The pdf where the map lands
+//!
+//! For every input of `[0, 1)^k`, each map's pdf at the point it returns is
+//! positive and finite, so a renderer may divide by it: `tests/warp.rs`
+//! sweeps the whole 2^-24 grid along every edge of the square (the four
+//! edges, 2^26 points per map) and checks it. The density functions accept
+//! the few ulps by which a map's rounding lands outside its exact domain
+//! (the concentric disk overshoots the unit circle by up to 2^-23).
+//!
+//! # Out-of-range input
+//!
+//! Every map clamps its input into `[0, 1)` before using it, coordinate by
+//! coordinate: a negative number (and NaN) is read as 0, a number at or
+//! above 1 as [`ONE_MINUS_EPSILON`]. Out-of-range input therefore gives a
+//! point of the domain with a valid pdf, in debug and release builds alike
+//! ([`discrete`] also asserts the range in debug builds, as documented
+//! there). The clamp costs two comparisons per coordinate and changes
+//! nothing for input inside `[0, 1)`.
+//!
 //! ```
 //! use wellspread::{Sampler2D, Sobol, warp};
 //!
@@ -70,6 +89,17 @@ fn unit(x: f32) -> f32 {
     x.max(0.0).min(ONE_MINUS_EPSILON)
 }
 
+/// Clamps both coordinates of a map's input into `[0, 1)` (NaN to 0).
+#[inline]
+fn unit2(u: Vec2) -> Vec2 {
+    Vec2::new(unit(u.x), unit(u.y))
+}
+
+/// How far past the unit circle [`concentric_disk`]'s rounding may land,
+/// in squared length: `|p| <= 1 + 2^-23` gives `|p|^2 <= 1 + 2^-22 +
+/// 2^-46`, and computing `|p|^2` in f32 adds up to two more roundings.
+const DISK_SLACK: f32 = 4.0 * f32::EPSILON;
+
 /// The atan2 angle of `(x, y)` as a fraction of a turn, in `[0, 1)`.
 #[inline]
 fn turn_fraction(x: f32, y: f32) -> f32 {
@@ -97,7 +127,10 @@ fn turn_fraction(x: f32, y: f32) -> f32 {
 ///   The kinks along the square's diagonals cost a little convergence
 ///   against the square (`tests/warp.rs` measures the slope).
 /// - `u = (0.5, 0.5)` maps to the centre; `|p| <= 1` within 2^-23 (one
-///   rounding of `cos` and `sin`), tested at every edge of the square.
+///   rounding of `cos` and `sin`), tested at every edge of the square;
+///   [`concentric_disk_pdf`] is `1 / pi` at every point the map returns,
+///   including those few ulps outside the circle.
+/// - Input outside `[0, 1)^2` is clamped into it (NaN to 0).
 ///
 /// # Cost
 ///
@@ -124,7 +157,7 @@ fn turn_fraction(x: f32, y: f32) -> f32 {
 /// Journal of Graphics Tools 2(3).
 #[inline]
 pub fn concentric_disk(u: Vec2) -> Vec2 {
-    let o = 2.0 * u - Vec2::ONE;
+    let o = 2.0 * unit2(u) - Vec2::ONE;
     if o.x == 0.0 && o.y == 0.0 {
         return Vec2::ZERO;
     }
@@ -141,17 +174,25 @@ pub fn concentric_disk(u: Vec2) -> Vec2 {
 /// disk: `1 / pi`, for every point of the disk.
 ///
 /// It takes the point so that callers write the same code for every map;
-/// a point outside the unit disk has density 0.
+/// a point outside the unit disk has density 0. The disk's boundary is
+/// taken with a slack of `4 f32::EPSILON` in squared length (`|p| <= 1 +
+/// 2^-22`), so that every point [`concentric_disk`] returns, rounding
+/// included, has density `1 / pi`: `concentric_disk(2^-24, 0)` lands at
+/// squared length `1 + 2^-23`.
 ///
 /// ```
-/// use wellspread::warp::concentric_disk_pdf;
+/// use wellspread::warp::{concentric_disk, concentric_disk_pdf};
 /// use wellspread::glam::Vec2;
 /// assert_eq!(concentric_disk_pdf(Vec2::new(0.3, -0.4)), core::f32::consts::FRAC_1_PI);
 /// assert_eq!(concentric_disk_pdf(Vec2::new(1.0, 1.0)), 0.0);
+/// // A point of the map just outside the circle still has the disk's density.
+/// let p = concentric_disk(Vec2::new(f32::EPSILON / 2.0, 0.0));
+/// assert!(p.length_squared() > 1.0);
+/// assert_eq!(concentric_disk_pdf(p), core::f32::consts::FRAC_1_PI);
 /// ```
 #[inline]
 pub fn concentric_disk_pdf(p: Vec2) -> f32 {
-    if p.length_squared() <= 1.0 {
+    if p.length_squared() <= 1.0 + DISK_SLACK {
         core::f32::consts::FRAC_1_PI
     } else {
         0.0
@@ -207,11 +248,17 @@ pub fn concentric_disk_inverse(p: Vec2) -> Vec2 {
 ///   estimator of irradiance from a Lambertian BSDF has weight `pi`.
 /// - Continuous, and the strata of the square become cells of equal
 ///   projected solid angle: what the concentric map keeps, this keeps.
-/// - `z >= 0` always; `|v| = 1` within 2^-22 (tested at the square's edges
-///   and over random inputs). The rim `z = 0` is reached at the square's
-///   boundary (`u.x = 0`, or `u.y = 0`), where the pdf is 0: an estimator
-///   should use the cancelled weight (`f cos / pdf = pi f`), not divide by
-///   the pdf.
+/// - `z >= 2^-12` always, so [`cosine_hemisphere_pdf`]`(z)` is positive
+///   and finite at every direction the map returns; `|v| = 1` within 2^-22
+///   (tested at the square's edges and over random inputs). The exact map
+///   reaches the rim `z = 0` on the square's boundary (`u.x = 0`, or `u.y
+///   = 0`), and the rounding of the disk point can take it there from a
+///   few 2^-24 inside; wherever `1 - |d|^2 < 2^-24`, `z` is lifted to
+///   `2^-12` (the exact `z` one 2^-24 step inside the square is about
+///   `2^-11`). The inputs this touches are a set of measure 0 in the
+///   limit and of about 2^-22 of the 2^-24 grid. An estimator may still
+///   prefer the cancelled weight (`f cos / pdf = pi f`) to a division.
+/// - Input outside `[0, 1)^2` is clamped into it (NaN to 0).
 ///
 /// # Cost
 ///
@@ -239,7 +286,9 @@ pub fn concentric_disk_inverse(p: Vec2) -> Vec2 {
 #[inline]
 pub fn cosine_hemisphere(u: Vec2) -> Vec3 {
     let d = concentric_disk(u);
-    let z = libm::sqrtf((1.0 - d.length_squared()).max(0.0));
+    // 1 - |d|^2 >= 2^-24: z >= 2^-12 where the disk point is on (or a
+    // rounding past) the rim.
+    let z = libm::sqrtf((1.0 - d.length_squared()).max(f32::EPSILON / 2.0));
     Vec3::new(d.x, d.y, z)
 }
 
@@ -288,6 +337,7 @@ pub fn cosine_hemisphere_inverse(v: Vec3) -> Vec2 {
 ///   like `1 / sqrt(1 - z)` there.
 /// - `z` in `[0, 1)`; `|v| = 1` within 2^-22, using `1 - z^2 =
 ///   (1 - z)(1 + z)` so the radius stays accurate near the pole.
+/// - Input outside `[0, 1)^2` is clamped into it (NaN to 0).
 ///
 /// # Cost
 ///
@@ -311,6 +361,7 @@ pub fn cosine_hemisphere_inverse(v: Vec3) -> Vec2 {
 /// section A.5.2.
 #[inline]
 pub fn uniform_hemisphere(u: Vec2) -> Vec3 {
+    let u = unit2(u);
     let z = u.x;
     let r = libm::sqrtf(((1.0 - z) * (1.0 + z)).max(0.0));
     let (sin, cos) = libm::sincosf(TAU * u.y);
@@ -365,6 +416,7 @@ pub fn uniform_hemisphere_inverse(v: Vec3) -> Vec2 {
 ///   [`uniform_hemisphere`], with the same slivers at both poles.
 /// - `z` in `(-1, 1]`; `|v| = 1` within 2^-22, the radius computed as
 ///   `2 sqrt(u.x (1 - u.x))`, accurate at both poles.
+/// - Input outside `[0, 1)^2` is clamped into it (NaN to 0).
 ///
 /// # Cost
 ///
@@ -389,6 +441,7 @@ pub fn uniform_hemisphere_inverse(v: Vec3) -> Vec2 {
 /// section A.5.2.
 #[inline]
 pub fn uniform_sphere(u: Vec2) -> Vec3 {
+    let u = unit2(u);
     let z = 1.0 - 2.0 * u.x;
     // 1 - z^2 = 4 u.x (1 - u.x): no cancellation near either pole.
     let r = 2.0 * libm::sqrtf((u.x * (1.0 - u.x)).max(0.0));
@@ -448,6 +501,7 @@ pub fn uniform_sphere_inverse(v: Vec3) -> Vec2 {
 ///   sqrt(u.x)`), which squeezes strata into slivers near a vertex.
 /// - Every coordinate is `>= 0` (`b2 >= 2^-24` for `u` in `[0, 1)^2`) and
 ///   `b0 + b1 + b2 = 1` within 2^-23, tested at every edge of the square.
+/// - Input outside `[0, 1)^2` is clamped into it (NaN to 0).
 ///
 /// # Cost
 ///
@@ -476,6 +530,7 @@ pub fn uniform_sphere_inverse(v: Vec3) -> Vec2 {
 /// technical report, Unity Technologies (hal-02073696).
 #[inline]
 pub fn uniform_triangle(u: Vec2) -> Vec3 {
+    let u = unit2(u);
     if u.x < u.y {
         let b0 = 0.5 * u.x;
         Vec3::new(b0, u.y - b0, 1.0 - u.y)

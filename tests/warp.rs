@@ -316,6 +316,130 @@ fn warps_stay_inside_their_domain_at_the_edges() {
     assert!(tri <= f32::EPSILON, "{tri}");
 }
 
+/// Every point of the 2^-24 grid on the four edges of `[0, 1)^2` (`x` or
+/// `y` is 0 or `1 - 2^-24`, the other coordinate `k 2^-24`): 2^26 points,
+/// where every wellspread sampler's output can land. Returns how many fail
+/// `ok` and the first that does, in parallel over chunks of `k`.
+fn sweep_edge_grid(ok: impl Fn(Vec2) -> bool + Sync) -> (u64, Option<Vec2>) {
+    use rayon::prelude::*;
+    const STEP: f32 = 1.0 / 16_777_216.0;
+    (0u32..1 << 10)
+        .into_par_iter()
+        .map(|chunk| {
+            let (mut failed, mut first) = (0u64, None);
+            for k in chunk << 14..(chunk + 1) << 14 {
+                let t = k as f32 * STEP;
+                for u in [
+                    Vec2::new(0.0, t),
+                    Vec2::new(LAST, t),
+                    Vec2::new(t, 0.0),
+                    Vec2::new(t, LAST),
+                ] {
+                    if !ok(u) {
+                        failed += 1;
+                        first = first.or(Some(u));
+                    }
+                }
+            }
+            (failed, first)
+        })
+        .reduce(|| (0, None), |a, b| (a.0 + b.0, a.1.or(b.1)))
+}
+
+/// `pdf` is positive and finite.
+fn valid_pdf(pdf: f32) -> bool {
+    pdf.is_finite() && pdf > 0.0
+}
+
+/// Item 1 of issue 27: at every point a 2D warp produces from the 2^-24
+/// edge grid, its pdf is positive and finite (a renderer divides by it).
+#[test]
+fn pdfs_are_positive_and_finite_on_the_edge_grid() {
+    let checks: [(&str, &(dyn Fn(Vec2) -> bool + Sync)); 5] = [
+        ("concentric_disk", &|u| {
+            let p = concentric_disk(u);
+            p.is_finite() && valid_pdf(concentric_disk_pdf(p))
+        }),
+        ("cosine_hemisphere", &|u| {
+            let v = cosine_hemisphere(u);
+            v.is_finite() && valid_pdf(cosine_hemisphere_pdf(v.z))
+        }),
+        ("uniform_hemisphere", &|u| {
+            let v = uniform_hemisphere(u);
+            v.is_finite() && valid_pdf(uniform_hemisphere_pdf(v))
+        }),
+        ("uniform_sphere", &|u| {
+            let v = uniform_sphere(u);
+            v.is_finite() && valid_pdf(uniform_sphere_pdf(v))
+        }),
+        ("uniform_triangle", &|u| {
+            let b = uniform_triangle(u);
+            b.is_finite() && b.min_element() >= 0.0 && valid_pdf(uniform_triangle_pdf(0.5))
+        }),
+    ];
+    for (name, ok) in checks {
+        let (failed, first) = sweep_edge_grid(ok);
+        assert_eq!(
+            failed, 0,
+            "{name}: {failed} edge points with a bad pdf, first {first:?}"
+        );
+    }
+}
+
+/// The sweep can fail: the disk pdf as it was (`|p|^2 <= 1`, no slack) is
+/// 0 at about 1.2 M of the 2^26 edge points (issue 27's fuzz figure).
+#[test]
+fn the_edge_grid_sweep_finds_the_old_disk_pdf_bug() {
+    let (failed, first) = sweep_edge_grid(|u| concentric_disk(u).length_squared() <= 1.0);
+    println!("old disk pdf: 0 at {failed} of 2^26 edge points, first {first:?}");
+    assert!(failed > 1_000_000, "{failed}");
+    assert_eq!(
+        concentric_disk_pdf(concentric_disk(Vec2::new(f32::EPSILON / 2.0, 0.0))),
+        core::f32::consts::FRAC_1_PI
+    );
+}
+
+/// Out-of-range input is clamped into `[0, 1)` (NaN to 0), in debug and
+/// release builds: the same point as the clamped input, with a valid pdf.
+#[test]
+fn warps_clamp_out_of_range_input() {
+    let bad = [
+        f32::NAN,
+        -1.0,
+        -0.0,
+        -f32::MIN_POSITIVE,
+        1.0,
+        1.0 + f32::EPSILON,
+        7.5,
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+    ];
+    let clamp = |x: f32| {
+        if x.is_nan() || x <= 0.0 {
+            0.0
+        } else {
+            x.min(LAST)
+        }
+    };
+    for &a in &bad {
+        for b in [0.25, a] {
+            for u in [Vec2::new(a, b), Vec2::new(b, a)] {
+                let c = Vec2::new(clamp(u.x), clamp(u.y));
+                assert_eq!(concentric_disk(u), concentric_disk(c), "{u}");
+                assert_eq!(cosine_hemisphere(u), cosine_hemisphere(c), "{u}");
+                assert_eq!(uniform_hemisphere(u), uniform_hemisphere(c), "{u}");
+                assert_eq!(uniform_sphere(u), uniform_sphere(c), "{u}");
+                assert_eq!(uniform_triangle(u), uniform_triangle(c), "{u}");
+                assert!(valid_pdf(concentric_disk_pdf(concentric_disk(u))), "{u}");
+                assert!(
+                    valid_pdf(cosine_hemisphere_pdf(cosine_hemisphere(u).z)),
+                    "{u}"
+                );
+            }
+        }
+    }
+}
+
 #[test]
 fn warps_hit_the_documented_points() {
     assert_eq!(concentric_disk(Vec2::splat(0.5)), Vec2::ZERO);
