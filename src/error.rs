@@ -151,6 +151,18 @@ pub enum Error {
         /// How many weights were given.
         count: usize,
     },
+    /// A pixel filter ([`filter`](crate::filter)) was given a parameter it
+    /// cannot use.
+    FilterParameter {
+        /// The filter, as the tools spell it.
+        filter: &'static str,
+        /// The parameter.
+        parameter: &'static str,
+        /// Its value.
+        value: f32,
+        /// What the filter accepts.
+        expected: &'static str,
+    },
 }
 
 /// A short copy of text a caller passed in (a sampler name), carried inside
@@ -367,6 +379,15 @@ impl fmt::Display for Error {
                 "a weighted choice needs at least one positive weight; got {count} weights, \
                  none positive (skip the draw when there is nothing to choose, or use \
                  warp::discrete for a uniform choice)"
+            ),
+            Error::FilterParameter {
+                filter,
+                parameter,
+                value,
+                expected,
+            } => write!(
+                f,
+                "the {filter} filter cannot use {parameter} = {value}; give {expected}"
             ),
             Error::TooManyWeights { count } => write!(
                 f,

@@ -126,6 +126,7 @@ extern crate std;
 pub use glam;
 
 mod error;
+pub mod filter;
 #[cfg(feature = "alloc")]
 pub mod metrics;
 mod pixel;
