@@ -106,6 +106,9 @@
 //!   bit-identical values: a build for auditors.
 //! - `serde` (off): `Serialize` / `Deserialize` for [`SamplerKind`], as its
 //!   kebab-case name (`"n-rooks"`), so settings files can name a sampler.
+//! - `rand` (off): [`Domain`] implements `rand_core::RngCore` (0.9), each
+//!   `next_u32` one 1D draw with the draw's 24 bits on top, so a renderer
+//!   written against `rand::Rng` gets `random::<f32>() == next_1d()`.
 //!
 //! With neither, the crate is `no_std` and the samplers and hashes still
 //! work. No feature changes a sample value.
