@@ -40,8 +40,11 @@
 //! makes a [`Domain`], the owned state of one pixel sample that hands out
 //! draws of one to four dimensions and keyed child domains
 //! ([`PixelSampler`] shows a path tracer's loop), and [`warp`] maps those
-//! draws onto disks, hemispheres, spheres, triangles and discrete choices;
-//! [`PixelSamplerKind`] picks a sampler by name:
+//! draws onto disks, hemispheres, spheres, triangles, lights (by solid
+//! angle) and discrete choices (uniform and weighted); [`filter`] draws the
+//! film offset from a pixel reconstruction filter (tent, Gaussian,
+//! Mitchell-Netravali, Lanczos, ...) through a monotone map, so the strata
+//! survive; [`PixelSamplerKind`] picks a sampler by name:
 //!
 //! ```
 //! use wellspread::{Padded, PixelSampler, Sobol, ZSobol};
