@@ -40,9 +40,11 @@
 //! # Memory and features
 //!
 //! No filter allocates: the tables are fixed-size arrays inside the
-//! filter (3,856 bytes: 241 nodes with their f32 position and value and
-//! an f64 CDF), so every filter works without `alloc`. The filters are
-//! `Copy`; the tabulated ones are about 4 KiB, so pass them by reference.
+//! filter (3,864 bytes: 241 nodes with their f32 position and value and
+//! an f64 CDF, and the integral), so every filter works without `alloc`.
+//! The filters are `Copy`; the tabulated ones are under 4 KiB with their
+//! parameters (`tests/filter.rs` checks the sizes), so pass them by
+//! reference.
 //!
 //! # Examples
 //!

@@ -489,3 +489,18 @@ fn filters_reject_bad_parameters() {
     let message = LanczosFilter::new(100.0, 3.0).unwrap_err().to_string();
     assert!(message.contains("at most 30 lobes"), "{message}");
 }
+
+/// The tables fit the 4 KiB budget, inside each filter: no allocation.
+#[test]
+fn tabulated_filters_fit_in_4_kib() {
+    use std::mem::size_of;
+    for (name, size) in [
+        ("mitchell", size_of::<MitchellFilter>()),
+        ("lanczos", size_of::<LanczosFilter>()),
+        ("blackman-harris", size_of::<BlackmanHarrisFilter>()),
+    ] {
+        println!("{name}: {size} bytes");
+        assert!(size <= 4096, "{name}: {size} bytes");
+    }
+    assert!(size_of::<GaussianFilter>() <= 32 && size_of::<BoxFilter>() <= 8);
+}
