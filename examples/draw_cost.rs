@@ -29,7 +29,10 @@ fn unit(x: u32) -> u32 {
 fn run<P: PixelSampler + Copy>(sampler: P, workload: &str, inputs: &[([u32; 2], u32)]) -> f32 {
     let mut acc = 0.0;
     if workload == "loop" {
-        return inputs.iter().map(|&(p, i)| black_box(p[0] ^ p[1] ^ i) as f32).sum();
+        return inputs
+            .iter()
+            .map(|&(p, i)| black_box(p[0] ^ p[1] ^ i) as f32)
+            .sum();
     }
     for &(pixel, index) in inputs {
         let mut d = sampler.start(pixel, index);
@@ -55,7 +58,9 @@ fn run<P: PixelSampler + Copy>(sampler: P, workload: &str, inputs: &[([u32; 2], 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let [name, workload] = args.as_slice() else {
-        eprintln!("usage: draw_cost <pixel sampler | unit> <1d | 2d | 4d | path | none | loop>[-any]");
+        eprintln!(
+            "usage: draw_cost <pixel sampler | unit> <1d | 2d | 4d | path | none | loop>[-any]"
+        );
         return ExitCode::from(2);
     };
     let mut x = 0x5eed_u32;

@@ -169,6 +169,46 @@ pub enum Error {
         /// Bits the index space needs (at most 32 are available).
         index_bits: u32,
     },
+    /// A weighted choice ([`warp::Discrete`](crate::warp::Discrete),
+    /// [`warp::AliasTable`](crate::warp::AliasTable)) was given a negative
+    /// weight (`-0.0` counts as `0.0` and is accepted).
+    NegativeWeight {
+        /// Index of the first such weight in the slice.
+        index: usize,
+        /// The weight.
+        weight: f32,
+    },
+    /// A weighted choice was given a NaN or infinite weight.
+    NonFiniteWeight {
+        /// Index of the first such weight in the slice.
+        index: usize,
+        /// The weight.
+        weight: f32,
+    },
+    /// A weighted choice was given no weights, or only zeros: there is
+    /// nothing to choose.
+    ZeroTotalWeight {
+        /// How many weights were given.
+        count: usize,
+    },
+    /// A weighted choice was given more weights than its `u32` indices
+    /// can name.
+    TooManyWeights {
+        /// How many weights were given.
+        count: usize,
+    },
+    /// A pixel filter ([`filter`](crate::filter)) was given a parameter it
+    /// cannot use.
+    FilterParameter {
+        /// The filter, as the tools spell it.
+        filter: &'static str,
+        /// The parameter.
+        parameter: &'static str,
+        /// Its value.
+        value: f32,
+        /// What the filter accepts.
+        expected: &'static str,
+    },
 }
 
 /// A short copy of text a caller passed in (a sampler name), carried inside
@@ -419,6 +459,36 @@ impl fmt::Display for Error {
                     f.write_str("render films of at most 65536 pixels on a side")
                 }
             }
+            Error::NegativeWeight { index, weight } => write!(
+                f,
+                "weight {index} is {weight}, which is negative; a weighted choice needs weights \
+                 >= 0 (give 0 to an item that must never be chosen)"
+            ),
+            Error::NonFiniteWeight { index, weight } => write!(
+                f,
+                "weight {index} is {weight}, which is not finite; a weighted choice needs finite \
+                 weights (scale them down, or clamp a light's power before building the table)"
+            ),
+            Error::ZeroTotalWeight { count } => write!(
+                f,
+                "a weighted choice needs at least one positive weight; got {count} weights, \
+                 none positive (skip the draw when there is nothing to choose, or use \
+                 warp::discrete for a uniform choice)"
+            ),
+            Error::FilterParameter {
+                filter,
+                parameter,
+                value,
+                expected,
+            } => write!(
+                f,
+                "the {filter} filter cannot use {parameter} = {value}; give {expected}"
+            ),
+            Error::TooManyWeights { count } => write!(
+                f,
+                "a weighted choice takes at most 2^32 - 1 = 4294967295 weights, got {count}; \
+                 group the items and choose in two draws"
+            ),
         }
     }
 }

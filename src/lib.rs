@@ -46,8 +46,11 @@
 //! makes a [`Domain`], the owned state of one pixel sample that hands out
 //! draws of one to four dimensions and keyed child domains
 //! ([`PixelSampler`] shows a path tracer's loop), and [`warp`] maps those
-//! draws onto disks, hemispheres, spheres, triangles and discrete choices;
-//! [`PixelSamplerKind`] picks a sampler by name:
+//! draws onto disks, hemispheres, spheres, triangles, lights (by solid
+//! angle) and discrete choices (uniform and weighted); [`filter`] draws the
+//! film offset from a pixel reconstruction filter (tent, Gaussian,
+//! Mitchell-Netravali, Lanczos, ...) through a monotone map, so the strata
+//! survive; [`PixelSamplerKind`] picks a sampler by name:
 //!
 //! ```
 //! use wellspread::{Padded, PixelSampler, Sobol, ZSobol};
@@ -112,6 +115,9 @@
 //!   bit-identical values: a build for auditors.
 //! - `serde` (off): `Serialize` / `Deserialize` for [`SamplerKind`], as its
 //!   kebab-case name (`"n-rooks"`), so settings files can name a sampler.
+//! - `rand` (off): [`Domain`] implements `rand_core::RngCore` (0.9), each
+//!   `next_u32` one 1D draw with the draw's 24 bits on top, so a renderer
+//!   written against `rand::Rng` gets `random::<f32>() == next_1d()`.
 //!
 //! With neither, the crate is `no_std` and the samplers and hashes still
 //! work. No feature changes a sample value.
@@ -132,6 +138,7 @@ extern crate std;
 pub use glam;
 
 mod error;
+pub mod filter;
 #[cfg(feature = "alloc")]
 pub mod metrics;
 mod pixel;

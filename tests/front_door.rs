@@ -28,6 +28,7 @@ fn every_relative_link_in_the_readme_and_docs_exists() {
         "docs/metrics.md",
         "docs/zsobol.md",
         "docs/blue_noise.md",
+        "docs/warps.md",
     ] {
         let dir = root.join(page).parent().unwrap().to_owned();
         let text = read(page);
@@ -57,6 +58,10 @@ fn docs_pages_start_with_their_regeneration_command_and_machine() {
         (
             "docs/blue_noise.md",
             "cargo run --release --example blue_noise --",
+        ),
+        (
+            "docs/warps.md",
+            "cargo run --release --example warps -- docs/images/warps.png",
         ),
     ] {
         let text = read(page);

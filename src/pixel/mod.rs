@@ -8,6 +8,8 @@ mod blue_noise;
 mod domain;
 mod kind;
 mod padded;
+#[cfg(feature = "rand")]
+mod rng;
 mod zsobol;
 
 use glam::{Vec2, Vec3, Vec4};
