@@ -455,6 +455,18 @@ struct Table {
 }
 
 impl Table {
+    /// The normalised 1D filter `f1(x) / (2 integral)` inside the support
+    /// `[-radius, radius]`, 0 outside: what every tabulated filter's
+    /// `eval_1d` returns.
+    #[inline]
+    fn density(&self, x: f64, radius: f64, f1: impl Fn(f64) -> f64) -> f64 {
+        if x.abs() <= radius {
+            f1(x) / (2.0 * self.integral)
+        } else {
+            0.0
+        }
+    }
+
     /// The table of `f1` on `[0, radius]`, or `None` if `f1` has more than
     /// [`MAX_LOBES`] lobes there (found on a scan of 4096 points) or a
     /// non-positive integral.
@@ -713,11 +725,7 @@ impl MitchellFilter {
 
     #[inline]
     fn eval_1d(&self, x: f64) -> f64 {
-        if x.abs() <= self.radius {
-            self.f1(x) / (2.0 * self.table.integral)
-        } else {
-            0.0
-        }
+        self.table.density(x, self.radius, |x| self.f1(x))
     }
 
     #[inline]
@@ -821,11 +829,7 @@ impl LanczosFilter {
 
     #[inline]
     fn eval_1d(&self, x: f64) -> f64 {
-        if x.abs() <= self.radius {
-            self.f1(x) / (2.0 * self.table.integral)
-        } else {
-            0.0
-        }
+        self.table.density(x, self.radius, |x| self.f1(x))
     }
 
     #[inline]
@@ -906,11 +910,8 @@ impl BlackmanHarrisFilter {
 
     #[inline]
     fn eval_1d(&self, x: f64) -> f64 {
-        if x.abs() <= self.radius {
-            blackman_harris_1d(x, self.radius) / (2.0 * self.table.integral)
-        } else {
-            0.0
-        }
+        self.table
+            .density(x, self.radius, |x| blackman_harris_1d(x, self.radius))
     }
 
     #[inline]

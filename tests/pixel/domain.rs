@@ -23,7 +23,7 @@ fn stratified_1d(kind: PixelSamplerKind) -> bool {
 
 /// Whether a kind's sets are sequences that need a power-of-two count for
 /// their nets.
-fn needs_power_of_two(kind: PixelSamplerKind) -> bool {
+pub(crate) fn needs_power_of_two(kind: PixelSamplerKind) -> bool {
     matches!(
         kind,
         PixelSamplerKind::Padded(SamplerKind::Sobol | SamplerKind::Pmj02 | SamplerKind::Halton)

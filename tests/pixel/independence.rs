@@ -142,18 +142,6 @@ fn tallies(kind: PixelSamplerKind, spp: u32) -> [(&'static str, Tally); 4] {
     ]
 }
 
-/// The samplers built on base-2 sequences whose every power-of-two prefix
-/// is a net (the second row; ZSobol's sets are fixed-size but its
-/// pixels' prefixes are nets too).
-fn is_progressive(kind: PixelSamplerKind) -> bool {
-    matches!(
-        kind,
-        PixelSamplerKind::Padded(SamplerKind::Sobol | SamplerKind::Pmj02 | SamplerKind::Halton)
-            | PixelSamplerKind::ZSobol
-            | PixelSamplerKind::BlueNoise
-    )
-}
-
 #[test]
 fn draws_are_as_independent_as_separately_shuffled_sets() {
     let mut failures = Vec::new();
@@ -163,7 +151,9 @@ fn draws_are_as_independent_as_separately_shuffled_sets() {
     {
         let reference = independent_sets(spp as usize, (SIDE * SIDE * FRAMES) as usize * 8);
         for kind in PixelSamplerKind::all() {
-            let progressive = is_progressive(kind);
+            // The sequences (ZSobol's pixels too) keep every power-of-two prefix
+            // a net: the second row.
+            let progressive = super::domain::needs_power_of_two(kind);
             let limit = if progressive {
                 progressive_limit
             } else {

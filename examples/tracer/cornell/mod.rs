@@ -7,9 +7,8 @@
 //! ceiling, a glass sphere (dielectric, Fresnel) and a white diffuse
 //! sphere, seen through a thin lens focused on the glass sphere.
 //!
-//! The path tracer uses next-event estimation to the light (a direction
-//! uniform in the rectangle's solid angle, `warp::spherical_rectangle`)
-//! and cosine-weighted BSDF sampling on diffuse surfaces,
+//! The path tracer uses next-event estimation to the light (a uniform point
+//! on the rectangle) and cosine-weighted BSDF sampling on diffuse surfaces,
 //! a Fresnel coin between reflection and refraction on glass, and Russian
 //! roulette after bounce 3. Emission found by a BSDF-sampled ray counts only
 //! after a camera or specular vertex, so light is never counted twice and
@@ -282,25 +281,22 @@ fn trace<S: PathSamples>(scene: &Scene, mut ray: Ray, root: &S) -> PathResult {
                 let (light_index, _) = warp::discrete(light_choice, 1);
                 debug_assert_eq!(light_index, 0);
                 let light = &scene.light;
-                // A direction uniform in the solid angle the light covers
-                // from here (Urena et al. 2013): the estimate has no 1 / r^2,
-                // which a uniform point on the rectangle has near the light.
-                let (corner, ex, ey) = light.corner_edges();
-                let (wi, solid_angle_pdf, st) =
-                    warp::spherical_rectangle(light_point, corner, ex, ey, origin);
-                let target = light.point(st);
-                // The light's normal is -y: its cosine is wi.y. A pdf of 0
-                // means the light is edge-on from here.
+                let target = light.point(light_point);
+                let to_light = target - origin;
+                let distance2 = to_light.length_squared();
+                let wi = to_light / distance2.sqrt();
+                // The light's normal is -y: its cosine is wi.y.
                 let (cos_surface, cos_light) = (n.dot(wi), wi.y);
-                if solid_angle_pdf > 0.0 && cos_surface > 0.0 && cos_light > 0.0 {
+                if cos_surface > 0.0 && cos_light > 0.0 {
                     rays += 1;
                     if scene.visible(origin, target) {
-                        let pdf = warp::discrete_pdf(1) * solid_angle_pdf;
+                        let pdf = warp::discrete_pdf(1) / light.area();
+                        let geometry = cos_surface * cos_light / distance2;
                         radiance += throughput
                             * albedo
                             * core::f32::consts::FRAC_1_PI
                             * LIGHT_RADIANCE
-                            * (cos_surface / pdf);
+                            * (geometry / pdf);
                     }
                 }
                 // BSDF sampling: cos / pi over the pdf cos / pi leaves the albedo.

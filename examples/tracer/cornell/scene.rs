@@ -85,18 +85,6 @@ impl Rect {
         size.x * size.y
     }
 
-    /// The corner `point(0, 0)` and the two edges from it, `point(u) =
-    /// corner + u.x ex + u.y ey`: the rectangle as `warp::rectangle` and
-    /// `warp::spherical_rectangle` take it.
-    pub(super) fn corner_edges(&self) -> (Vec3, Vec3, Vec3) {
-        let (a, b) = self.other_axes();
-        let corner = self.point(Vec2::ZERO);
-        let (mut ex, mut ey) = (Vec3::ZERO, Vec3::ZERO);
-        ex[a] = self.max.x - self.min.x;
-        ey[b] = self.max.y - self.min.y;
-        (corner, ex, ey)
-    }
-
     /// The point of the rectangle at `u` in `[0, 1)^2`, uniform in area.
     pub(super) fn point(&self, u: Vec2) -> Vec3 {
         let (a, b) = self.other_axes();
