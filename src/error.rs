@@ -151,6 +151,9 @@ pub enum Error {
     UnknownPixelSampler {
         /// The name given (its first [`InputText::CAPACITY`] bytes).
         name: InputText,
+        /// The pixel samplers' own names, listed after the
+        /// [`SamplerKind`] names in the message.
+        pixel_only: &'static [&'static str],
     },
     /// [`ZSobol`](crate::ZSobol) was asked for a number of samples per
     /// pixel that is not a power of two.
@@ -408,18 +411,20 @@ impl fmt::Display for Error {
                 if name.is_truncated() {
                     f.write_str("...")?;
                 }
-                f.write_str("\"; expected one of:")?;
-                for kind in SamplerKind::ALL {
-                    write!(f, " {kind}")?;
-                }
-                Ok(())
+                f.write_str("\"; ")?;
+                crate::samplers::write_expected_names(f, &[])
             }
-            Error::UnknownPixelSampler { name } => {
-                write!(f, "unknown pixel sampler \"{name}\"; expected one of:")?;
-                for kind in crate::PixelSamplerKind::all() {
-                    write!(f, " {kind}")?;
+            Error::UnknownPixelSampler { name, pixel_only } => {
+                write!(
+                    f,
+                    "unknown pixel sampler \"{}",
+                    name.as_str().escape_debug()
+                )?;
+                if name.is_truncated() {
+                    f.write_str("...")?;
                 }
-                write!(f, " (any case; aliases: {})", crate::pixel::ALIASES_TEXT)
+                f.write_str("\"; ")?;
+                crate::samplers::write_expected_names(f, pixel_only)
             }
             Error::SamplesNotPowerOfTwo { samples_per_pixel } => {
                 let above = u64::from(samples_per_pixel).next_power_of_two();

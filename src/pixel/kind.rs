@@ -8,24 +8,12 @@ use glam::{Vec2, Vec3, Vec4};
 
 use super::{BlueNoise, Draw, Padded, PixelSampler, Root, ZSobol};
 use crate::error::InputText;
+use crate::samplers::same_name;
 use crate::{AnySampler, Error, SamplerKind};
 
-/// Short names accepted besides the full ones, each with its kind. Names
-/// are compared ignoring case, `-`, `_` and spaces.
-const ALIASES: &[(&str, SamplerKind)] = &[
-    ("cmj", SamplerKind::CorrelatedMultiJittered),
-    ("mj", SamplerKind::MultiJittered),
-    ("pmj", SamplerKind::Pmj02),
-    ("rooks", SamplerKind::NRooks),
-    ("latin-hypercube", SamplerKind::NRooks),
-    ("lhs", SamplerKind::NRooks),
-    ("stratified", SamplerKind::Jittered),
-    ("white", SamplerKind::Random),
-];
-
-/// The aliases as the error message lists them.
-pub(crate) const ALIASES_TEXT: &str =
-    "cmj, mj, pmj, rooks, latin-hypercube, lhs, stratified, white";
+/// The names of the pixel samplers that are not a padded [`SamplerKind`],
+/// in [`PixelSamplerKind::ALL`]'s order.
+pub(crate) const PIXEL_ONLY_NAMES: &[&str] = &["zsobol", "blue-noise"];
 
 /// Every pixel sampler wellspread offers: [`Padded`] over each
 /// [`SamplerKind`], [`ZSobol`] and [`BlueNoise`].
@@ -64,12 +52,21 @@ pub enum PixelSamplerKind {
 
 impl PixelSamplerKind {
     /// Every pixel sampler kind: the padded form of each of
-    /// [`SamplerKind::ALL`], in its order, then `ZSobol`.
+    /// [`SamplerKind::ALL`], in its order, then `ZSobol` and `BlueNoise`.
+    pub const ALL: &'static [PixelSamplerKind] = &{
+        let mut all = [PixelSamplerKind::ZSobol; SamplerKind::ALL.len() + 2];
+        let mut i = 0;
+        while i < SamplerKind::ALL.len() {
+            all[i] = PixelSamplerKind::Padded(SamplerKind::ALL[i]);
+            i += 1;
+        }
+        all[i + 1] = PixelSamplerKind::BlueNoise;
+        all
+    };
+
+    /// [`ALL`](Self::ALL) as an iterator.
     pub fn all() -> impl Iterator<Item = PixelSamplerKind> + Clone {
-        SamplerKind::ALL
-            .iter()
-            .map(|&kind| PixelSamplerKind::Padded(kind))
-            .chain([PixelSamplerKind::ZSobol, PixelSamplerKind::BlueNoise])
+        Self::ALL.iter().copied()
     }
 
     /// The name tools use: the [`SamplerKind`] name, `"zsobol"` or
@@ -119,68 +116,30 @@ impl fmt::Display for PixelSamplerKind {
     }
 }
 
-/// `a` and `b` equal ignoring ASCII case and the separators `-`, `_`, ` `.
-fn same_name(a: &str, b: &str) -> bool {
-    let key = |s: &str| {
-        s.bytes()
-            .filter(|c| !matches!(c, b'-' | b'_' | b' '))
-            .map(|c| c.to_ascii_lowercase())
-            .collect::<heapless_bytes::Bytes>()
-    };
-    key(a) == key(b)
-}
-
-/// A fixed-capacity byte string for [`same_name`], so parsing needs no
-/// allocation (no_std).
-mod heapless_bytes {
-    /// Up to 64 bytes; longer inputs keep a marker so they never compare
-    /// equal to a (short) sampler name.
-    #[derive(PartialEq, Eq)]
-    pub(super) struct Bytes {
-        bytes: [u8; 64],
-        len: usize,
-        overflow: bool,
-    }
-
-    impl FromIterator<u8> for Bytes {
-        fn from_iter<I: IntoIterator<Item = u8>>(iter: I) -> Self {
-            let mut out = Bytes {
-                bytes: [0; 64],
-                len: 0,
-                overflow: false,
-            };
-            for b in iter {
-                if out.len == out.bytes.len() {
-                    out.overflow = true;
-                    break;
-                }
-                out.bytes[out.len] = b;
-                out.len += 1;
-            }
-            out
-        }
-    }
-}
-
 impl FromStr for PixelSamplerKind {
     type Err = Error;
 
-    /// The kind named `name`, ignoring case and separators, or an alias.
+    /// The kind named `name`: `"zsobol"`, `"blue-noise"`, or a
+    /// [`SamplerKind`] name or alias for its padded form, by
+    /// [`SamplerKind`]'s rule (any case, with or without `-`, `_` or
+    /// spaces).
     ///
     /// # Errors
     ///
     /// [`Error::UnknownPixelSampler`], which names the input and lists
     /// the valid names.
     fn from_str(name: &str) -> Result<Self, Self::Err> {
-        if let Some(kind) = PixelSamplerKind::all().find(|kind| same_name(kind.name(), name)) {
-            return Ok(kind);
+        if same_name(name, PixelSamplerKind::ZSobol.name()) {
+            return Ok(PixelSamplerKind::ZSobol);
         }
-        ALIASES
-            .iter()
-            .find(|(alias, _)| same_name(alias, name))
-            .map(|&(_, kind)| PixelSamplerKind::Padded(kind))
-            .ok_or(Error::UnknownPixelSampler {
+        if same_name(name, PixelSamplerKind::BlueNoise.name()) {
+            return Ok(PixelSamplerKind::BlueNoise);
+        }
+        name.parse::<SamplerKind>()
+            .map(PixelSamplerKind::Padded)
+            .map_err(|_| Error::UnknownPixelSampler {
                 name: InputText::new(name),
+                pixel_only: PIXEL_ONLY_NAMES,
             })
     }
 }

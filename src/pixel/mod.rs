@@ -16,7 +16,6 @@ use glam::{Vec2, Vec3, Vec4};
 
 pub use blue_noise::BlueNoise;
 pub use domain::Domain;
-pub(crate) use kind::ALIASES_TEXT;
 pub use kind::{AnyPixelSampler, PixelSamplerKind};
 pub use padded::Padded;
 pub use zsobol::ZSobol;

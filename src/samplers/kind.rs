@@ -210,10 +210,55 @@ impl fmt::Display for SamplerKind {
     }
 }
 
+/// Short names accepted besides the full ones, each with its kind: the one
+/// alias table, which [`SamplerKind`]'s and
+/// [`PixelSamplerKind`](crate::PixelSamplerKind)'s parsers and their error
+/// messages read.
+pub(crate) const ALIASES: &[(&str, SamplerKind)] = &[
+    ("cmj", SamplerKind::CorrelatedMultiJittered),
+    ("mj", SamplerKind::MultiJittered),
+    ("pmj", SamplerKind::Pmj02),
+    ("rooks", SamplerKind::NRooks),
+    ("latin-hypercube", SamplerKind::NRooks),
+    ("lhs", SamplerKind::NRooks),
+    ("stratified", SamplerKind::Jittered),
+    ("white", SamplerKind::Random),
+];
+
+/// `a` and `b` equal ignoring ASCII case and the separators `-`, `_`, ` `:
+/// the one rule for sampler names.
+pub(crate) fn same_name(a: &str, b: &str) -> bool {
+    fn key(s: &str) -> impl Iterator<Item = u8> + '_ {
+        s.bytes()
+            .filter(|c| !matches!(c, b'-' | b'_' | b' '))
+            .map(|c| c.to_ascii_lowercase())
+    }
+    key(a).eq(key(b))
+}
+
+/// Writes the valid names for an error message: every kind's name, then
+/// `extra` (the pixel samplers' own), then the aliases.
+pub(crate) fn write_expected_names(f: &mut fmt::Formatter<'_>, extra: &[&str]) -> fmt::Result {
+    f.write_str("expected one of:")?;
+    for kind in SamplerKind::ALL {
+        write!(f, " {kind}")?;
+    }
+    for name in extra {
+        write!(f, " {name}")?;
+    }
+    f.write_str(" (any case, with or without - _ or spaces; aliases:")?;
+    for (i, (alias, _)) in ALIASES.iter().enumerate() {
+        write!(f, "{}{alias}", if i == 0 { " " } else { ", " })?;
+    }
+    f.write_str(")")
+}
+
 impl FromStr for SamplerKind {
     type Err = Error;
 
-    /// The kind named `name` (exactly, as [`SamplerKind::name`] spells it).
+    /// The kind named `name` or one of its aliases (`cmj`, `mj`, `pmj`,
+    /// ...), ignoring ASCII case and the separators `-`, `_` and spaces:
+    /// `"Sobol"`, `"n_rooks"` and `"CMJ"` all parse.
     ///
     /// # Errors
     ///
@@ -223,7 +268,13 @@ impl FromStr for SamplerKind {
         SamplerKind::ALL
             .iter()
             .copied()
-            .find(|kind| kind.name() == name)
+            .find(|kind| same_name(kind.name(), name))
+            .or_else(|| {
+                ALIASES
+                    .iter()
+                    .find(|(alias, _)| same_name(alias, name))
+                    .map(|&(_, kind)| kind)
+            })
             .ok_or(Error::UnknownSampler {
                 name: crate::error::InputText::new(name),
             })

@@ -19,6 +19,7 @@ pub use grid::{
 };
 pub use hammersley::Hammersley;
 pub use kind::{AnySampler, SamplerKind};
+pub(crate) use kind::{same_name, write_expected_names};
 pub use nd::{LatinHypercube, OrthogonalArray, OrthogonalArrayOffset};
 pub use random::Random;
 pub use sequence::{Halton, Pmj02, Sobol};

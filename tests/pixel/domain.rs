@@ -397,6 +397,25 @@ fn every_pixel_sampler_parses_by_name_alias_and_any_case() {
         long.parse::<PixelSamplerKind>(),
         Err(Error::UnknownPixelSampler { .. })
     ));
+    // Names are escaped: the message stays one line.
+    let message = "zs\nobol\u{1b}[31m"
+        .parse::<PixelSamplerKind>()
+        .unwrap_err()
+        .to_string();
+    assert!(
+        !message.contains('\n') && !message.contains('\u{1b}') && message.contains("zs\\nobol"),
+        "{message}"
+    );
+    // `ALL` is the const slice `all()` iterates, every kind once.
+    assert_eq!(PixelSamplerKind::ALL.len(), SamplerKind::ALL.len() + 2);
+    assert!(PixelSamplerKind::all().eq(PixelSamplerKind::ALL.iter().copied()));
+    for (i, kind) in PixelSamplerKind::ALL.iter().enumerate() {
+        assert!(
+            !PixelSamplerKind::ALL[i + 1..].contains(kind),
+            "{kind} twice"
+        );
+        assert_eq!(kind.name().parse::<PixelSamplerKind>(), Ok(*kind));
+    }
 }
 
 #[test]

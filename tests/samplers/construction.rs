@@ -25,6 +25,37 @@ fn samplers_are_plain_values() {
     plain::<AnySampler>();
 }
 
+/// One parser: `SamplerKind` takes any case, `-`, `_` or spaces, and the
+/// aliases the README lists, as `PixelSamplerKind` does.
+#[test]
+fn kinds_parse_in_any_case_with_any_separator_and_by_alias() {
+    for (name, kind) in [
+        ("Sobol", SamplerKind::Sobol),
+        ("CMJ", SamplerKind::CorrelatedMultiJittered),
+        ("n_rooks", SamplerKind::NRooks),
+        ("N Rooks", SamplerKind::NRooks),
+        ("Multi-Jittered", SamplerKind::MultiJittered),
+        ("multi-jittered ", SamplerKind::MultiJittered),
+        ("cmj", SamplerKind::CorrelatedMultiJittered),
+        ("mj", SamplerKind::MultiJittered),
+        ("pmj", SamplerKind::Pmj02),
+        ("rooks", SamplerKind::NRooks),
+        ("latin-hypercube", SamplerKind::NRooks),
+        ("lhs", SamplerKind::NRooks),
+        ("stratified", SamplerKind::Jittered),
+        ("white", SamplerKind::Random),
+        ("BLUE_MULTI_JITTERED", SamplerKind::BlueMultiJittered),
+    ] {
+        assert_eq!(name.parse::<SamplerKind>(), Ok(kind), "{name:?}");
+    }
+    // The error lists the names and the aliases, from the one table.
+    let message = "nope".parse::<SamplerKind>().unwrap_err().to_string();
+    for expected in ["sobol", "n-rooks", "cmj", "stratified", "any case"] {
+        assert!(message.contains(expected), "{message}");
+    }
+    assert!(!message.contains('\n'));
+}
+
 #[test]
 fn kinds_round_trip_through_their_names() {
     for &kind in SamplerKind::ALL {
@@ -32,7 +63,7 @@ fn kinds_round_trip_through_their_names() {
         assert_eq!(kind.to_string(), kind.name());
         assert_eq!(kind.build(9).unwrap().kind(), kind);
     }
-    for bad in ["", "Jittered", "jitter", "n_rooks", "multi-jittered "] {
+    for bad in ["", "-", "jitter", "jitterd", "n-rook", "sobol2", "zsobol"] {
         let Err(Error::UnknownSampler { name }) = bad.parse::<SamplerKind>() else {
             panic!("{bad:?} parsed");
         };
