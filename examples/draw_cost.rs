@@ -16,7 +16,7 @@
 use std::hint::black_box;
 use std::process::ExitCode;
 
-use wellspread::{AnyPixelSampler, PixelSampler, PixelSamplerKind};
+use wellspread::{AnyPixelSampler, AnySampler, Padded, PixelSampler, PixelSamplerKind};
 
 const SAMPLES: u32 = 1 << 16;
 
@@ -103,21 +103,23 @@ fn main() -> ExitCode {
         if through_any {
             run(any, workload, &inputs)
         } else {
+            // The concrete type of every kind: no wildcard, so a new kind
+            // does not compile until it has its line.
             match any {
                 AnyPixelSampler::Padded(p) => match *p.sampler() {
-                    wellspread::AnySampler::Sobol(s) => {
-                        run(wellspread::Padded::new(s, 0), workload, &inputs)
+                    AnySampler::Regular(s) => run(Padded::new(s, 0), workload, &inputs),
+                    AnySampler::Random(s) => run(Padded::new(s, 0), workload, &inputs),
+                    AnySampler::Jittered(s) => run(Padded::new(s, 0), workload, &inputs),
+                    AnySampler::NRooks(s) => run(Padded::new(s, 0), workload, &inputs),
+                    AnySampler::MultiJittered(s) => run(Padded::new(s, 0), workload, &inputs),
+                    AnySampler::CorrelatedMultiJittered(s) => {
+                        run(Padded::new(s, 0), workload, &inputs)
                     }
-                    wellspread::AnySampler::Pmj02(s) => {
-                        run(wellspread::Padded::new(s, 0), workload, &inputs)
-                    }
-                    wellspread::AnySampler::Random(s) => {
-                        run(wellspread::Padded::new(s, 0), workload, &inputs)
-                    }
-                    wellspread::AnySampler::CorrelatedMultiJittered(s) => {
-                        run(wellspread::Padded::new(s, 0), workload, &inputs)
-                    }
-                    _ => run(any, workload, &inputs),
+                    AnySampler::BlueMultiJittered(s) => run(Padded::new(s, 0), workload, &inputs),
+                    AnySampler::Hammersley(s) => run(Padded::new(s, 0), workload, &inputs),
+                    AnySampler::Halton(s) => run(Padded::new(s, 0), workload, &inputs),
+                    AnySampler::Sobol(s) => run(Padded::new(s, 0), workload, &inputs),
+                    AnySampler::Pmj02(s) => run(Padded::new(s, 0), workload, &inputs),
                 },
                 AnyPixelSampler::ZSobol(s) => run(s, workload, &inputs),
                 AnyPixelSampler::BlueNoise(s) => run(s, workload, &inputs),

@@ -611,9 +611,21 @@ impl Table {
     }
 }
 
-/// The Mitchell-Netravali cubic on the standard support `[-2, 2]`.
+/// The Mitchell-Netravali cubic `k(x)` on its standard support `[-2, 2]`
+/// (Mitchell & Netravali 1988, "Reconstruction Filters in Computer
+/// Graphics"), unnormalised: `b = c = 1/3` is their recommended filter.
+/// [`MitchellFilter`] scales it to its radius and samples it.
+///
+/// ```
+/// use wellspread::filter::mitchell_netravali;
+/// let (b, c) = (1.0 / 3.0, 1.0 / 3.0);
+/// assert!((mitchell_netravali(0.0, b, c) - (6.0 - 2.0 * b) / 6.0).abs() < 1e-12);
+/// assert_eq!(mitchell_netravali(2.5, b, c), 0.0);
+/// assert!(mitchell_netravali(1.5, b, c) < 0.0); // the negative lobe
+/// ```
 #[inline]
-fn mitchell_1d(x: f64, b: f64, c: f64) -> f64 {
+#[must_use]
+pub fn mitchell_netravali(x: f64, b: f64, c: f64) -> f64 {
     let x = x.abs();
     let value = if x < 1.0 {
         (12.0 - 9.0 * b - 6.0 * c) * x * x * x
@@ -702,7 +714,7 @@ impl MitchellFilter {
             }
         }
         let (bb, cc) = (f64::from(b), f64::from(c));
-        let table = Table::new(radius, |x| mitchell_1d(2.0 * x / radius, bb, cc)).ok_or(
+        let table = Table::new(radius, |x| mitchell_netravali(2.0 * x / radius, bb, cc)).ok_or(
             Error::FilterParameter {
                 filter: "mitchell",
                 parameter: "b",
@@ -720,7 +732,7 @@ impl MitchellFilter {
 
     #[inline]
     fn f1(&self, x: f64) -> f64 {
-        mitchell_1d(2.0 * x / self.radius, self.b, self.c)
+        mitchell_netravali(2.0 * x / self.radius, self.b, self.c)
     }
 
     #[inline]

@@ -96,23 +96,8 @@ impl Filter {
                 let g = |t: f64| (-t * t / (2.0 * SIGMA * SIGMA)).exp();
                 (g(d) - g(1.5)).max(0.0)
             }
-            Filter::Mitchell => {
-                const B: f64 = 1.0 / 3.0;
-                const C: f64 = 1.0 / 3.0;
-                let value = if d < 1.0 {
-                    (12.0 - 9.0 * B - 6.0 * C) * d * d * d
-                        + (-18.0 + 12.0 * B + 6.0 * C) * d * d
-                        + (6.0 - 2.0 * B)
-                } else if d < 2.0 {
-                    (-B - 6.0 * C) * d * d * d
-                        + (6.0 * B + 30.0 * C) * d * d
-                        + (-12.0 * B - 48.0 * C) * d
-                        + (8.0 * B + 24.0 * C)
-                } else {
-                    0.0
-                };
-                value / 6.0
-            }
+            // Mitchell & Netravali's recommended B = C = 1/3.
+            Filter::Mitchell => wellspread::filter::mitchell_netravali(d, 1.0 / 3.0, 1.0 / 3.0),
         }
     }
 }
