@@ -123,6 +123,8 @@ fn main() -> ExitCode {
                 },
                 AnyPixelSampler::ZSobol(s) => run(s, workload, &inputs),
                 AnyPixelSampler::BlueNoise(s) => run(s, workload, &inputs),
+                AnyPixelSampler::Orthogonal(s) => run(s, workload, &inputs),
+                AnyPixelSampler::LatinHypercube(s) => run(s, workload, &inputs),
             }
         }
     };

@@ -150,7 +150,8 @@ pub mod warp;
 
 pub use error::{Error, InputText};
 pub use pixel::{
-    AnyPixelSampler, BlueNoise, Domain, Draw, Padded, PixelSampler, PixelSamplerKind, Root, ZSobol,
+    AnyPixelSampler, BlueNoise, Domain, Draw, Padded, PaddedNd, PixelSampler, PixelSamplerKind,
+    Root, ZSobol,
 };
 pub use primitives::pattern_seed;
 pub use samplers::{

@@ -6,7 +6,7 @@
 
 use glam::{Vec2, Vec3, Vec4};
 
-use crate::primitives::{child_key, mix64, permute, rand_u32, salt, stratum_to_unit_f32};
+use crate::primitives::{locate_pass, mix64, permute, rand_u32, salt, stratum_to_unit_f32};
 use crate::simd::Isa;
 
 /// A set of `len()` well-distributed points in `[0, 1)^2`, with random access.
@@ -217,12 +217,7 @@ pub trait DomainSampler: Sampler2D {
     /// continue the sequence.
     #[inline]
     fn locate(&self, index: u32, key: u64) -> (u32, u64) {
-        let n = self.len();
-        if index < n || n == 0 {
-            (index, key)
-        } else {
-            (index % n, child_key(key, salt::PASS, index / n))
-        }
+        locate_pass(index, self.len(), key)
     }
 
     /// Sample `index` of the 1D set picked by `stream`. The default is

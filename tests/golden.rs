@@ -155,7 +155,12 @@ fn domains_text() -> String {
     text += "# sampler spp width height frame pixel-x pixel-y index: next_1d | next_2d | next_4d | branch(7).next_2d | split(3, 4, 1).next_2d\n";
     for kind in PixelSamplerKind::all() {
         for (spp, [width, height], frame, [x, y], _) in PIXEL_CASES {
-            let sampler = kind.build(spp, [width, height], frame).unwrap();
+            let sampler = match kind.build(spp, [width, height], frame) {
+                Ok(sampler) => sampler,
+                // 8 is not the square of a prime power.
+                Err(_) if kind == PixelSamplerKind::Orthogonal && spp == 8 => continue,
+                Err(e) => panic!("{kind} at {spp} spp: {e}"),
+            };
             for index in 0..4 {
                 let mut d = sampler.start([x, y], index);
                 let one = d.next_1d();

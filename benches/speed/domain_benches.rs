@@ -20,7 +20,7 @@
 //!   draws per sample.
 //!
 //! Back ends: sobol, pmj02, random, jittered, cmj, blue-multi-jittered
-//! (padded), zsobol and blue-noise. The unit runs first and last
+//! (padded), zsobol, blue-noise, orthogonal and latin-hypercube. The unit runs first and last
 //! (`unit/2d-again`); ratios divide by the faster. The table goes to
 //! stdout and `<target>/domain-ratios.md`.
 //! `cargo bench --bench speed -- domain` runs only this group.
@@ -33,8 +33,9 @@ use criterion::{BenchmarkId, Criterion, criterion_group};
 use rand::Rng;
 use wellspread::glam::Vec2;
 use wellspread::{
-    AnyPixelSampler, BlueMultiJittered, BlueNoise, CorrelatedMultiJittered, Jittered, Padded,
-    PixelSampler, PixelSamplerKind, Pmj02, Random, Sobol, ZSobol,
+    AnyPixelSampler, BlueMultiJittered, BlueNoise, CorrelatedMultiJittered, Jittered,
+    LatinHypercube, OrthogonalArray, Padded, PaddedNd, PixelSampler, PixelSamplerKind, Pmj02,
+    Random, Sobol, ZSobol,
 };
 
 use crate::sampler_benches::{configure, estimate_ns, pcg, target_dir};
@@ -167,15 +168,19 @@ fn back_end<P: PixelSampler + Copy>(
 /// Back ends and their targets for start + next_2d over the unit (for
 /// blue-noise: over padded sobol's start + next_2d), and for sobol's
 /// next_4d.
-const BACK_ENDS: &[(&str, f64, Option<f64>)] = &[
-    ("sobol", 3.0, Some(4.5)),
-    ("pmj02", 3.0, None),
-    ("random", 1.0, None),
-    ("jittered", 5.0, None),
-    ("cmj", 5.0, None),
-    ("blue-multi-jittered", 5.0, None),
-    ("zsobol", 3.5, None),
-    ("blue-noise", 1.3, None),
+/// Back ends with their targets for start+next_2d and start+next_4d,
+/// where one is set.
+const BACK_ENDS: &[(&str, Option<f64>, Option<f64>)] = &[
+    ("sobol", Some(3.0), Some(4.5)),
+    ("pmj02", Some(3.0), None),
+    ("random", Some(1.0), None),
+    ("jittered", Some(5.0), None),
+    ("cmj", Some(5.0), None),
+    ("blue-multi-jittered", Some(5.0), None),
+    ("zsobol", Some(3.5), None),
+    ("blue-noise", Some(1.3), None),
+    ("orthogonal", None, None),
+    ("latin-hypercube", None, None),
 ];
 
 /// The `AnyPixelSampler` of a back end's name.
@@ -262,6 +267,23 @@ fn domain(c: &mut Criterion) {
         any("blue-noise"),
         &inputs,
     );
+    back_end(
+        &mut group,
+        "orthogonal",
+        PaddedNd::new(OrthogonalArray::new(SPP, 5, 2).unwrap(), 0),
+        any("orthogonal"),
+        &inputs,
+    );
+    back_end(
+        &mut group,
+        "latin-hypercube",
+        PaddedNd::new(
+            LatinHypercube::new(SPP, LatinHypercube::MAX_DIMENSIONS).unwrap(),
+            0,
+        ),
+        any("latin-hypercube"),
+        &inputs,
+    );
     group.bench_function(BenchmarkId::new("unit", "2d-again"), unit_2d);
     group.finish();
     report(since);
@@ -289,10 +311,15 @@ fn report(since: SystemTime) {
     let _ = writeln!(t, "|---|---|---|---|---|---|---|---|");
     for &(name, target_2d, target_4d) in BACK_ENDS {
         let m = |id: &str| median(&format!("{name}/{id}"));
-        let (base, target) = if name == "blue-noise" {
-            (sobol_2d, format!("<= {target_2d:.1}x sobol's"))
+        let base = if name == "blue-noise" {
+            sobol_2d
         } else {
-            (Some(unit), format!("<= {target_2d:.1}x"))
+            Some(unit)
+        };
+        let target = match target_2d {
+            Some(v) if name == "blue-noise" => format!("<= {v:.1}x sobol's"),
+            Some(v) => format!("<= {v:.1}x"),
+            None => "-".to_string(),
         };
         let four = match target_4d {
             Some(v) => format!("{} (<= {v:.1}x)", ratio(m("start+4d"), Some(unit))),

@@ -15,7 +15,10 @@ use crate::primitives::{child_key, salt};
 /// A domain is a node of a tree (as in OpenQMC's domains). Each node has
 /// a 64-bit key; [`branch`](Self::branch) and [`split`](Self::split) derive
 /// children from the key alone, and the draws `next_1d` ... `next_4d` read
-/// the node's draws 0, 1, 2, ... one per call, whatever their width.
+/// the node's draws 0, 1, 2, ... one per call, whatever their width. The
+/// domain also counts the values its draws returned, for
+/// [`PaddedNd`](crate::PaddedNd), whose draws take consecutive dimensions
+/// of one set.
 ///
 /// # Properties
 ///
@@ -76,14 +79,14 @@ use crate::primitives::{child_key, salt};
 ///
 /// # Size
 ///
-/// The sampler plus 24 bytes (a u64 key, the index, the draw counter and
-/// the pixel state); `size_of` is tested per sampler in
+/// The sampler plus 24 bytes (a u64 key, the index, the draw and
+/// dimension counters and the pixel state); `size_of` is tested per sampler in
 /// `tests/pixel/domain.rs` and listed in `docs/performance.md`.
 ///
 /// # Limits
 ///
 /// - The draw counter wraps after 2^32 draws (no panic), after which the
-///   streams repeat.
+///   streams repeat; the dimension counter wraps after 2^32 values.
 /// - `split` with `count = 0` is a debug-build panic; a release build
 ///   treats it as `count = 1`. `j >= count` is a debug-build panic; a
 ///   release build uses `j` as given (sample `index * count + j`, which
@@ -111,6 +114,7 @@ pub struct Domain<S> {
     key: u64,
     index: u32,
     draws: u32,
+    dimensions: u32,
     pixel_state: u32,
     sampler: S,
 }
@@ -126,6 +130,7 @@ impl<S: PixelSampler> Domain<S> {
             key,
             index,
             draws: 0,
+            dimensions: 0,
             pixel_state: root.pixel_state,
             sampler,
         }
@@ -157,11 +162,27 @@ impl<S: PixelSampler> Domain<S> {
         self.draws
     }
 
-    /// The next draw's inputs; advances the draw counter.
+    /// How many values this domain's draws have returned (1 per
+    /// `next_1d`, 2 per `next_2d`, ...): the next draw's first scalar
+    /// dimension, which [`PaddedNd`](crate::PaddedNd) reads.
+    #[inline]
+    pub const fn dimensions(&self) -> u32 {
+        self.dimensions
+    }
+
+    /// The inputs of the next draw, `width` values wide; advances the
+    /// draw and dimension counters.
     #[inline(always)]
-    fn advance(&mut self) -> Draw {
-        let draw = Draw::new(self.key, self.draws, self.index, self.pixel_state);
+    fn advance(&mut self, width: u32) -> Draw {
+        let draw = Draw::new(
+            self.key,
+            self.draws,
+            self.dimensions,
+            self.index,
+            self.pixel_state,
+        );
         self.draws = self.draws.wrapping_add(1);
+        self.dimensions = self.dimensions.wrapping_add(width);
         draw
     }
 
@@ -169,14 +190,14 @@ impl<S: PixelSampler> Domain<S> {
     /// pixel's samples where the sampler allows (see its `draw_1d`).
     #[inline]
     pub fn next_1d(&mut self) -> f32 {
-        let draw = self.advance();
+        let draw = self.advance(1);
         self.sampler.draw_1d(draw)
     }
 
     /// The next draw as a point in `[0, 1)^2`.
     #[inline]
     pub fn next_2d(&mut self) -> Vec2 {
-        let draw = self.advance();
+        let draw = self.advance(2);
         self.sampler.draw_2d(draw)
     }
 
@@ -184,7 +205,7 @@ impl<S: PixelSampler> Domain<S> {
     /// advances by one whatever the width).
     #[inline]
     pub fn next_3d(&mut self) -> Vec3 {
-        let draw = self.advance();
+        let draw = self.advance(3);
         self.sampler.draw_3d(draw)
     }
 
@@ -193,7 +214,7 @@ impl<S: PixelSampler> Domain<S> {
     /// pairs (see each sampler's `draw_4d`).
     #[inline]
     pub fn next_4d(&mut self) -> Vec4 {
-        let draw = self.advance();
+        let draw = self.advance(4);
         self.sampler.draw_4d(draw)
     }
 
@@ -208,6 +229,7 @@ impl<S: PixelSampler> Domain<S> {
         Self {
             key: child_key(self.key, salt::BRANCH, key),
             draws: 0,
+            dimensions: 0,
             ..*self
         }
     }
@@ -231,6 +253,7 @@ impl<S: PixelSampler> Domain<S> {
             key,
             index,
             draws: 0,
+            dimensions: 0,
             ..*self
         }
     }

@@ -6,24 +6,41 @@ use core::str::FromStr;
 
 use glam::{Vec2, Vec3, Vec4};
 
-use super::{BlueNoise, Draw, Padded, PixelSampler, Root, ZSobol};
+use super::{BlueNoise, Draw, Padded, PaddedNd, PixelSampler, Root, ZSobol};
 use crate::error::InputText;
 use crate::samplers::same_name;
-use crate::{AnySampler, Error, SamplerKind};
+use crate::{AnySampler, Error, LatinHypercube, OrthogonalArray, SamplerKind};
 
-/// The names of the pixel samplers that are not a padded [`SamplerKind`],
-/// in [`PixelSamplerKind::ALL`]'s order.
-pub(crate) const PIXEL_ONLY_NAMES: &[&str] = &["zsobol", "blue-noise"];
+/// The pixel samplers that are not a padded [`SamplerKind`], in
+/// [`PixelSamplerKind::ALL`]'s order.
+const PIXEL_ONLY: [PixelSamplerKind; 4] = [
+    PixelSamplerKind::ZSobol,
+    PixelSamplerKind::BlueNoise,
+    PixelSamplerKind::Orthogonal,
+    PixelSamplerKind::LatinHypercube,
+];
+
+/// Their names, for error messages.
+pub(crate) const PIXEL_ONLY_NAMES: &[&str] = &{
+    let mut names = [""; PIXEL_ONLY.len()];
+    let mut i = 0;
+    while i < PIXEL_ONLY.len() {
+        names[i] = PIXEL_ONLY[i].name();
+        i += 1;
+    }
+    names
+};
 
 /// Every pixel sampler wellspread offers: [`Padded`] over each
-/// [`SamplerKind`], [`ZSobol`] and [`BlueNoise`].
+/// [`SamplerKind`], [`ZSobol`], [`BlueNoise`], and [`PaddedNd`] over an
+/// [`OrthogonalArray`] and a [`LatinHypercube`].
 ///
 /// Names are the README's: a [`SamplerKind`] name (`"sobol"`,
-/// `"correlated-multi-jittered"`, ...) for its padded form, `"zsobol"` and
-/// `"blue-noise"`.
+/// `"correlated-multi-jittered"`, ...) for its padded form, `"zsobol"`,
+/// `"blue-noise"`, `"orthogonal"` and `"latin-hypercube"`.
 /// Parsing ignores case, `-`, `_` and spaces, and accepts the short
-/// aliases `cmj`, `mj`, `pmj`, `rooks`, `latin-hypercube`, `lhs`,
-/// `stratified` and `white`.
+/// aliases `cmj`, `mj`, `pmj`, `rooks`, `lhs` (padded n-rooks, the 2D
+/// Latin hypercube), `stratified` and `white`.
 ///
 /// ```
 /// use wellspread::{PixelSampler, PixelSamplerKind, SamplerKind};
@@ -48,19 +65,30 @@ pub enum PixelSamplerKind {
     ZSobol,
     /// [`BlueNoise`].
     BlueNoise,
+    /// [`PaddedNd`] over an [`OrthogonalArray`] of strength 2 with its
+    /// most dimensions (`q + 1` for `q^2` samples per pixel).
+    Orthogonal,
+    /// [`PaddedNd`] over a [`LatinHypercube`] of
+    /// [`MAX_DIMENSIONS`](LatinHypercube::MAX_DIMENSIONS).
+    LatinHypercube,
 }
 
 impl PixelSamplerKind {
     /// Every pixel sampler kind: the padded form of each of
-    /// [`SamplerKind::ALL`], in its order, then `ZSobol` and `BlueNoise`.
+    /// [`SamplerKind::ALL`], in its order, then `ZSobol`, `BlueNoise`,
+    /// `Orthogonal` and `LatinHypercube`.
     pub const ALL: &'static [PixelSamplerKind] = &{
-        let mut all = [PixelSamplerKind::ZSobol; SamplerKind::ALL.len() + 2];
+        let padded = SamplerKind::ALL.len();
+        let mut all = [PixelSamplerKind::ZSobol; SamplerKind::ALL.len() + PIXEL_ONLY.len()];
         let mut i = 0;
-        while i < SamplerKind::ALL.len() {
-            all[i] = PixelSamplerKind::Padded(SamplerKind::ALL[i]);
+        while i < all.len() {
+            all[i] = if i < padded {
+                PixelSamplerKind::Padded(SamplerKind::ALL[i])
+            } else {
+                PIXEL_ONLY[i - padded]
+            };
             i += 1;
         }
-        all[i + 1] = PixelSamplerKind::BlueNoise;
         all
     };
 
@@ -69,14 +97,16 @@ impl PixelSamplerKind {
         Self::ALL.iter().copied()
     }
 
-    /// The name tools use: the [`SamplerKind`] name, `"zsobol"` or
-    /// `"blue-noise"`.
+    /// The name tools use: the [`SamplerKind`] name, `"zsobol"`,
+    /// `"blue-noise"`, `"orthogonal"` or `"latin-hypercube"`.
     #[must_use]
     pub const fn name(self) -> &'static str {
         match self {
             PixelSamplerKind::Padded(kind) => kind.name(),
             PixelSamplerKind::ZSobol => "zsobol",
             PixelSamplerKind::BlueNoise => "blue-noise",
+            PixelSamplerKind::Orthogonal => "orthogonal",
+            PixelSamplerKind::LatinHypercube => "latin-hypercube",
         }
     }
 
@@ -89,7 +119,9 @@ impl PixelSamplerKind {
     ///
     /// What the sampler's constructor rejects: `samples_per_pixel = 0` for
     /// all, a count that is not a power of two, a zero side or too large an
-    /// index space for ZSobol (see [`ZSobol::new`]).
+    /// index space for ZSobol (see [`ZSobol::new`]), a count that is not
+    /// the square of a prime power for `Orthogonal` (the error names the
+    /// nearest valid counts; see [`OrthogonalArray::new`]).
     pub fn build(
         self,
         samples_per_pixel: u32,
@@ -106,6 +138,16 @@ impl PixelSamplerKind {
             PixelSamplerKind::BlueNoise => {
                 AnyPixelSampler::BlueNoise(BlueNoise::new(samples_per_pixel, resolution, frame)?)
             }
+            PixelSamplerKind::Orthogonal => {
+                // Strength 2 has q + 1 columns: ask for 3, read q back.
+                let levels = OrthogonalArray::new(samples_per_pixel, 3, 2)?.levels();
+                let array = OrthogonalArray::new(samples_per_pixel, levels + 1, 2)?;
+                AnyPixelSampler::Orthogonal(PaddedNd::new(array, frame))
+            }
+            PixelSamplerKind::LatinHypercube => {
+                let cube = LatinHypercube::new(samples_per_pixel, LatinHypercube::MAX_DIMENSIONS)?;
+                AnyPixelSampler::LatinHypercube(PaddedNd::new(cube, frame))
+            }
         })
     }
 }
@@ -119,21 +161,18 @@ impl fmt::Display for PixelSamplerKind {
 impl FromStr for PixelSamplerKind {
     type Err = Error;
 
-    /// The kind named `name`: `"zsobol"`, `"blue-noise"`, or a
-    /// [`SamplerKind`] name or alias for its padded form, by
-    /// [`SamplerKind`]'s rule (any case, with or without `-`, `_` or
-    /// spaces).
+    /// The kind named `name`: `"zsobol"`, `"blue-noise"`, `"orthogonal"`,
+    /// `"latin-hypercube"`, or a [`SamplerKind`] name or alias for its
+    /// padded form, by [`SamplerKind`]'s rule (any case, with or without
+    /// `-`, `_` or spaces).
     ///
     /// # Errors
     ///
     /// [`Error::UnknownPixelSampler`], which names the input and lists
     /// the valid names.
     fn from_str(name: &str) -> Result<Self, Self::Err> {
-        if same_name(name, PixelSamplerKind::ZSobol.name()) {
-            return Ok(PixelSamplerKind::ZSobol);
-        }
-        if same_name(name, PixelSamplerKind::BlueNoise.name()) {
-            return Ok(PixelSamplerKind::BlueNoise);
+        if let Some(&kind) = PIXEL_ONLY.iter().find(|kind| same_name(name, kind.name())) {
+            return Ok(kind);
         }
         name.parse::<SamplerKind>()
             .map(PixelSamplerKind::Padded)
@@ -156,6 +195,10 @@ pub enum AnyPixelSampler {
     ZSobol(ZSobol),
     /// A [`BlueNoise`].
     BlueNoise(BlueNoise),
+    /// An orthogonal array through [`PaddedNd`].
+    Orthogonal(PaddedNd<OrthogonalArray>),
+    /// A Latin hypercube through [`PaddedNd`].
+    LatinHypercube(PaddedNd<LatinHypercube>),
 }
 
 impl AnyPixelSampler {
@@ -166,6 +209,8 @@ impl AnyPixelSampler {
             AnyPixelSampler::Padded(p) => PixelSamplerKind::Padded(p.sampler().kind()),
             AnyPixelSampler::ZSobol(_) => PixelSamplerKind::ZSobol,
             AnyPixelSampler::BlueNoise(_) => PixelSamplerKind::BlueNoise,
+            AnyPixelSampler::Orthogonal(_) => PixelSamplerKind::Orthogonal,
+            AnyPixelSampler::LatinHypercube(_) => PixelSamplerKind::LatinHypercube,
         }
     }
 }
@@ -177,6 +222,8 @@ impl PixelSampler for AnyPixelSampler {
             AnyPixelSampler::Padded(s) => s.samples_per_pixel(),
             AnyPixelSampler::ZSobol(s) => s.samples_per_pixel(),
             AnyPixelSampler::BlueNoise(s) => s.samples_per_pixel(),
+            AnyPixelSampler::Orthogonal(s) => s.samples_per_pixel(),
+            AnyPixelSampler::LatinHypercube(s) => s.samples_per_pixel(),
         }
     }
     #[inline]
@@ -185,6 +232,8 @@ impl PixelSampler for AnyPixelSampler {
             AnyPixelSampler::Padded(s) => s.root(pixel),
             AnyPixelSampler::ZSobol(s) => s.root(pixel),
             AnyPixelSampler::BlueNoise(s) => s.root(pixel),
+            AnyPixelSampler::Orthogonal(s) => s.root(pixel),
+            AnyPixelSampler::LatinHypercube(s) => s.root(pixel),
         }
     }
     #[inline]
@@ -193,6 +242,8 @@ impl PixelSampler for AnyPixelSampler {
             AnyPixelSampler::Padded(s) => s.locate(index, key),
             AnyPixelSampler::ZSobol(s) => s.locate(index, key),
             AnyPixelSampler::BlueNoise(s) => s.locate(index, key),
+            AnyPixelSampler::Orthogonal(s) => s.locate(index, key),
+            AnyPixelSampler::LatinHypercube(s) => s.locate(index, key),
         }
     }
     #[inline]
@@ -201,6 +252,8 @@ impl PixelSampler for AnyPixelSampler {
             AnyPixelSampler::Padded(s) => s.draw_1d(draw),
             AnyPixelSampler::ZSobol(s) => s.draw_1d(draw),
             AnyPixelSampler::BlueNoise(s) => s.draw_1d(draw),
+            AnyPixelSampler::Orthogonal(s) => s.draw_1d(draw),
+            AnyPixelSampler::LatinHypercube(s) => s.draw_1d(draw),
         }
     }
     #[inline]
@@ -209,6 +262,8 @@ impl PixelSampler for AnyPixelSampler {
             AnyPixelSampler::Padded(s) => s.draw_2d(draw),
             AnyPixelSampler::ZSobol(s) => s.draw_2d(draw),
             AnyPixelSampler::BlueNoise(s) => s.draw_2d(draw),
+            AnyPixelSampler::Orthogonal(s) => s.draw_2d(draw),
+            AnyPixelSampler::LatinHypercube(s) => s.draw_2d(draw),
         }
     }
     #[inline]
@@ -217,6 +272,8 @@ impl PixelSampler for AnyPixelSampler {
             AnyPixelSampler::Padded(s) => s.draw_3d(draw),
             AnyPixelSampler::ZSobol(s) => s.draw_3d(draw),
             AnyPixelSampler::BlueNoise(s) => s.draw_3d(draw),
+            AnyPixelSampler::Orthogonal(s) => s.draw_3d(draw),
+            AnyPixelSampler::LatinHypercube(s) => s.draw_3d(draw),
         }
     }
     #[inline]
@@ -225,6 +282,8 @@ impl PixelSampler for AnyPixelSampler {
             AnyPixelSampler::Padded(s) => s.draw_4d(draw),
             AnyPixelSampler::ZSobol(s) => s.draw_4d(draw),
             AnyPixelSampler::BlueNoise(s) => s.draw_4d(draw),
+            AnyPixelSampler::Orthogonal(s) => s.draw_4d(draw),
+            AnyPixelSampler::LatinHypercube(s) => s.draw_4d(draw),
         }
     }
 }

@@ -8,6 +8,7 @@ mod blue_noise;
 mod domain;
 mod kind;
 mod padded;
+mod padded_nd;
 #[cfg(feature = "rand")]
 mod rng;
 mod zsobol;
@@ -18,6 +19,7 @@ pub use blue_noise::BlueNoise;
 pub use domain::Domain;
 pub use kind::{AnyPixelSampler, PixelSamplerKind};
 pub use padded::Padded;
+pub use padded_nd::PaddedNd;
 pub use zsobol::ZSobol;
 
 use crate::primitives::{mix64, salt};
@@ -161,8 +163,10 @@ pub trait PixelSampler: Send + Sync {
 
     /// Draw `pair` of sample `index` of `pixel` as a point in `[0, 1)^2`,
     /// in O(1): exactly the `pair`-th [`Domain::next_2d`] of
-    /// `start(pixel, index)` (after `pair` draws of any width), for code
-    /// written against pbrt-v4's `Get2D` or a per-pair pattern.
+    /// `start(pixel, index)` after `pair` calls of `next_2d`, for code
+    /// written against pbrt-v4's `Get2D` or a per-pair pattern. (Only
+    /// [`PaddedNd`] reads how many dimensions the draws before took; for
+    /// every other sampler the draws before may have any width.)
     ///
     /// ```
     /// use wellspread::{Padded, PixelSampler, Sobol};
@@ -178,7 +182,13 @@ pub trait PixelSampler: Send + Sync {
     fn sample_pixel(&self, pixel: [u32; 2], index: u32, pair: u32) -> Vec2 {
         let root = self.root(pixel);
         let (index, key) = self.locate(index, root.key);
-        self.draw_2d(Draw::new(key, pair, index, root.pixel_state))
+        self.draw_2d(Draw::new(
+            key,
+            pair,
+            pair.wrapping_mul(2),
+            index,
+            root.pixel_state,
+        ))
     }
 
     /// The domain of sample `index` of `pixel`: [`root`](Self::root) and
@@ -254,18 +264,28 @@ pub struct Draw {
     /// increment, so it is the same for every sample index of a pixel (as
     /// a pattern must be) and unrelated between draws, keys and branches.
     pub stream: u64,
+    /// The domain's key, for samplers whose draws share one pattern
+    /// across a domain ([`PaddedNd`]).
+    pub key: u64,
+    /// The draw's first scalar dimension within its domain: how many
+    /// values the domain's draws before it returned (1 per `next_1d`, 2
+    /// per `next_2d`, ...; [`Domain::dimensions`]).
+    pub dimension: u32,
 }
 
 impl Draw {
-    /// Draw number `draw` of a domain keyed `key`, at sample `index`: the
-    /// one formula [`Domain`] and [`PixelSampler::sample_pixel`] share.
+    /// Draw number `draw` of a domain keyed `key`, starting at its scalar
+    /// dimension `dimension`, at sample `index`: the one formula
+    /// [`Domain`] and [`PixelSampler::sample_pixel`] share.
     #[inline(always)]
     #[must_use]
-    pub const fn new(key: u64, draw: u32, index: u32, pixel_state: u32) -> Self {
+    pub const fn new(key: u64, draw: u32, dimension: u32, index: u32, pixel_state: u32) -> Self {
         Self {
             index,
             pixel_state,
             stream: mix64(key.wrapping_add((draw as u64).wrapping_mul(salt::DRAW_WEYL))),
+            key,
+            dimension,
         }
     }
 

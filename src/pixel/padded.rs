@@ -100,12 +100,8 @@ impl<S: DomainSampler + Send + Sync> PixelSampler for Padded<S> {
     /// from another's in their high bits too, so no pixel of one frame
     /// shares its key with a nearby pixel of another.
     #[inline(always)]
-    fn root(&self, [x, y]: [u32; 2]) -> Root {
-        Root {
-            key: (u64::from(y) << 32 | u64::from(x))
-                ^ u64::from(self.frame).wrapping_mul(salt::PADDED_FRAME),
-            pixel_state: 0,
-        }
+    fn root(&self, pixel: [u32; 2]) -> Root {
+        packed_root(pixel, self.frame)
     }
 
     #[inline]
@@ -131,5 +127,17 @@ impl<S: DomainSampler + Send + Sync> PixelSampler for Padded<S> {
     #[inline]
     fn draw_4d(&self, draw: Draw) -> Vec4 {
         self.sampler.domain_4d(draw.index, draw.stream)
+    }
+}
+
+/// The root of a padded domain: `(y, x)` packed into 64 bits, xored with
+/// the frame times an odd 64-bit constant (no hash: every draw mixes the
+/// key).
+#[inline(always)]
+pub(super) fn packed_root([x, y]: [u32; 2], frame: u32) -> Root {
+    Root {
+        key: (u64::from(y) << 32 | u64::from(x))
+            ^ u64::from(frame).wrapping_mul(salt::PADDED_FRAME),
+        pixel_state: 0,
     }
 }

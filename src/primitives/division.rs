@@ -18,8 +18,10 @@ pub(crate) struct InvariantDivisor {
     d: u32,
     /// `log2 d` for a power of two, else `s - 64`.
     shift: u32,
-    /// `m`, or 0 for a power of two.
-    magic: u64,
+    /// `m`, or 0 for a power of two, as its low and high halves: two u32
+    /// keep the struct 4-byte aligned, so a sampler holding several packs
+    /// them with its other u32 fields.
+    magic: [u32; 2],
 }
 
 impl InvariantDivisor {
@@ -37,7 +39,7 @@ impl InvariantDivisor {
             return Self {
                 d,
                 shift: d.trailing_zeros(),
-                magic: 0,
+                magic: [0; 2],
             };
         }
         let l = u32::BITS - (d - 1).leading_zeros();
@@ -50,8 +52,14 @@ impl InvariantDivisor {
         Self {
             d,
             shift: s - 64,
-            magic: magic as u64,
+            magic: [magic as u32, (magic >> 32) as u32],
         }
+    }
+
+    /// `m`.
+    #[inline(always)]
+    const fn magic(self) -> u64 {
+        (self.magic[1] as u64) << 32 | self.magic[0] as u64
     }
 
     /// The divisor itself.
@@ -63,7 +71,7 @@ impl InvariantDivisor {
     /// `log2 d` if `d` is a power of two.
     #[inline(always)]
     pub(crate) const fn log2(self) -> Option<u32> {
-        if self.magic == 0 {
+        if self.magic() == 0 {
             Some(self.shift)
         } else {
             None
@@ -75,10 +83,10 @@ impl InvariantDivisor {
     pub(crate) const fn div(self, x: u64) -> u64 {
         debug_assert!(x < 1 << Self::NUMERATOR_BITS);
         // The branch goes the same way for every call on one divisor.
-        if self.magic == 0 {
+        if self.magic() == 0 {
             x >> self.shift
         } else {
-            (((x as u128 * self.magic as u128) >> 64) as u64) >> self.shift
+            (((x as u128 * self.magic() as u128) >> 64) as u64) >> self.shift
         }
     }
 
@@ -93,7 +101,7 @@ impl InvariantDivisor {
     /// the `_in` methods below (and of the samplers' loops) apply.
     #[inline(always)]
     pub(crate) const fn is_power_of_two(self) -> bool {
-        self.magic == 0
+        self.magic() == 0
     }
 
     /// [`div_rem`](Self::div_rem), specialised at compile time: with `POW2`

@@ -57,6 +57,19 @@ pub(crate) const fn child_key(key: u64, salt: u64, child: u32) -> u64 {
     mix64(key ^ salt).wrapping_add((child as u64).wrapping_mul(salt::BRANCH_WEYL))
 }
 
+/// The fixed-size rule for sample `index` of a set of `n` keyed `key`:
+/// indices `p n .. (p + 1) n` are pass `p`, a complete set keyed by the
+/// pass's child key. Returns `(index in the set, key of the set)`.
+#[inline(always)]
+#[must_use]
+pub(crate) fn locate_pass(index: u32, n: u32, key: u64) -> (u32, u64) {
+    if index < n || n == 0 {
+        (index, key)
+    } else {
+        (index % n, child_key(key, salt::PASS, index / n))
+    }
+}
+
 /// The pattern for one pixel, frame (or seed) and dimension pair.
 ///
 /// Renderers call this once per pixel and dimension pair (pixel position,
@@ -161,6 +174,10 @@ pub(crate) mod salt {
     pub(crate) const SOBOL_W: u32 = 0x8f1b_bcdd;
     /// The index shuffle's key, xored into a rotation of a stream.
     pub(crate) const DRAW_ORDER: u32 = 0x2c1b_3c6d;
+    /// Xored into a domain's key for the pattern of page `p` of a
+    /// [`PaddedNd`](crate::PaddedNd) (its dimensions `p D .. (p + 1) D`;
+    /// fraction bits of sqrt(31)).
+    pub(crate) const PAGE: u64 = 0x9159_015a_3070_dd17;
 }
 
 #[cfg(test)]
@@ -182,6 +199,7 @@ mod tests {
             salt::BLUE_NOISE_FRAME,
             salt::BLUE_NOISE_PIXEL,
             salt::RANDOM_INDEX,
+            salt::PAGE,
         ];
         let u32s = [
             salt::ORDER,

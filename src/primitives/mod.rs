@@ -26,7 +26,7 @@ mod permutation;
 mod unit;
 
 pub(crate) use division::InvariantDivisor;
-pub(crate) use hash::{child_key, salt};
+pub(crate) use hash::{child_key, locate_pass, salt};
 pub use hash::{hash_combine, hash_u32, mix64, pattern_seed, rand_u32};
 pub use owen::{owen_scramble, owen_scramble_reversed, radical_inverse_2};
 pub use permutation::prefix_shuffle;

@@ -374,19 +374,25 @@ fn every_pixel_sampler_parses_by_name_alias_and_any_case() {
         let sampler = kind.build(16, [32, 32], 0).unwrap();
         assert_eq!(sampler.kind(), kind);
     }
-    assert_eq!(PixelSamplerKind::all().count(), SamplerKind::ALL.len() + 2);
+    assert_eq!(PixelSamplerKind::all().count(), SamplerKind::ALL.len() + 4);
     for (alias, kind) in [
         ("cmj", SamplerKind::CorrelatedMultiJittered),
         ("MJ", SamplerKind::MultiJittered),
         ("pmj", SamplerKind::Pmj02),
         ("nrooks", SamplerKind::NRooks),
-        ("LatinHypercube", SamplerKind::NRooks),
+        ("lhs", SamplerKind::NRooks),
     ] {
         assert_eq!(
             alias.parse::<PixelSamplerKind>().unwrap(),
             PixelSamplerKind::Padded(kind)
         );
     }
+    // The pixel samplers' own names come first: "latin-hypercube" is the
+    // N-dimensional one, though `SamplerKind` takes it for n-rooks.
+    assert_eq!(
+        "LatinHypercube".parse::<PixelSamplerKind>().unwrap(),
+        PixelSamplerKind::LatinHypercube
+    );
     let message = "zsobl".parse::<PixelSamplerKind>().unwrap_err().to_string();
     assert!(
         message.contains("\"zsobl\"") && message.contains("zsobol") && message.contains("cmj"),
@@ -407,7 +413,7 @@ fn every_pixel_sampler_parses_by_name_alias_and_any_case() {
         "{message}"
     );
     // `ALL` is the const slice `all()` iterates, every kind once.
-    assert_eq!(PixelSamplerKind::ALL.len(), SamplerKind::ALL.len() + 2);
+    assert_eq!(PixelSamplerKind::ALL.len(), SamplerKind::ALL.len() + 4);
     assert!(PixelSamplerKind::all().eq(PixelSamplerKind::ALL.iter().copied()));
     for (i, kind) in PixelSamplerKind::ALL.iter().enumerate() {
         assert!(
@@ -689,8 +695,9 @@ fn split_children_of_fixed_size_samplers_are_complete_sets() {
 
 /// One value per (pixel, index, draw): `sample_pixel(pixel, index, d)` is
 /// the `d`-th draw of `start(pixel, index)` taken as a 2D draw, whatever
-/// the widths of the draws before it, for every pixel sampler, through the
-/// enum, a trait object and at the edges.
+/// the widths of the draws before it (2D for `PaddedNd`, which reads
+/// dimensions), for every pixel sampler, through the enum, a trait object
+/// and at the edges.
 #[test]
 fn sample_pixel_is_the_domain_draw_for_every_kind() {
     for frame in [0, 7, u32::MAX] {
@@ -705,8 +712,15 @@ fn sample_pixel_is_the_domain_draw_for_every_kind() {
             ] {
                 for pair in 0..6 {
                     let mut d = sampler.start(pixel, index);
+                    // PaddedNd reads dimensions, not draws: for it
+                    // sample_pixel follows `pair` 2D draws.
+                    let by_dimension = matches!(
+                        kind,
+                        PixelSamplerKind::Orthogonal | PixelSamplerKind::LatinHypercube
+                    );
                     for k in 0..pair {
                         match k % 3 {
+                            _ if by_dimension => drop(d.next_2d()),
                             0 => drop(d.next_4d()),
                             1 => drop(d.next_1d()),
                             _ => drop(d.next_3d()),
@@ -732,7 +746,8 @@ fn sample_pixel_is_the_domain_draw_for_every_kind() {
 /// `Domain` stays small and cheap to copy: at most 48 bytes for the
 /// sequences, random, Hammersley, ZSobol and BlueNoise. The grid family
 /// carries three 16-byte reciprocals (and blue multi-jitter its lattice),
-/// so its domains, and `AnyPixelSampler`'s, are larger: their sizes are
+/// an orthogonal array four (one in its field), so their domains, and
+/// `AnyPixelSampler`'s, are larger: their sizes are
 /// pinned here so that they do not grow unnoticed (`docs/performance.md`
 /// says what getting them under 48 bytes would take).
 #[test]
@@ -740,7 +755,8 @@ fn domain_sizes() {
     use core::mem::size_of;
     use wellspread::{
         AnySampler, BlueMultiJittered, BlueNoise, CorrelatedMultiJittered, Halton, Hammersley,
-        Jittered, MultiJittered, NRooks, Pmj02, Random, Regular,
+        Jittered, LatinHypercube, MultiJittered, NRooks, OrthogonalArray, PaddedNd, Pmj02, Random,
+        Regular,
     };
     let small = [
         ("Padded<Sobol>", size_of::<Domain<Padded<Sobol>>>()),
@@ -780,11 +796,21 @@ fn domain_sizes() {
         (
             "Padded<BlueMultiJittered>",
             size_of::<Domain<Padded<BlueMultiJittered>>>(),
-            104,
+            96,
         ),
         (
             "Padded<AnySampler>",
             size_of::<Domain<Padded<AnySampler>>>(),
+            104,
+        ),
+        (
+            "PaddedNd<LatinHypercube>",
+            size_of::<Domain<PaddedNd<LatinHypercube>>>(),
+            48,
+        ),
+        (
+            "PaddedNd<OrthogonalArray>",
+            size_of::<Domain<PaddedNd<OrthogonalArray>>>(),
             112,
         ),
         ("AnyPixelSampler", size_of::<Domain<AnyPixelSampler>>(), 112),

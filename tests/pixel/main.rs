@@ -4,6 +4,7 @@
 
 mod domain;
 mod independence;
+mod padded_nd;
 
 use wellspread::glam::Vec2;
 use wellspread::metrics::is_net_base2;

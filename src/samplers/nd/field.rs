@@ -22,9 +22,7 @@ pub(crate) const MAX_ORDER: u32 = 4096;
 /// encoding).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub(crate) struct Field {
-    /// The characteristic, a prime.
-    p: u32,
-    /// `p` with its reciprocal, so that the digit and remainder operations
+    /// The characteristic `p`, a prime, with its reciprocal, so that the digit and remainder operations
     /// multiply instead of dividing.
     divisor: InvariantDivisor,
     /// The degree over GF(p).
@@ -138,7 +136,6 @@ impl Field {
         let divisor = InvariantDivisor::new(p);
         if k == 1 {
             return Some(Self {
-                p,
                 divisor,
                 k,
                 top_place,
@@ -159,7 +156,6 @@ impl Field {
             i += 1;
         }
         Some(Self {
-            p,
             divisor,
             k,
             top_place,
@@ -170,7 +166,7 @@ impl Field {
     /// The number of elements, `q`.
     #[inline(always)]
     pub(crate) const fn order(self) -> u32 {
-        self.top_place * self.p
+        self.top_place * self.divisor.get()
     }
 
     /// `a + b` (`a, b < q`).
@@ -178,8 +174,12 @@ impl Field {
     pub(crate) const fn add(self, a: u32, b: u32) -> u32 {
         if self.k == 1 {
             let s = a + b;
-            if s >= self.p { s - self.p } else { s }
-        } else if self.p == 2 {
+            if s >= self.divisor.get() {
+                s - self.divisor.get()
+            } else {
+                s
+            }
+        } else if self.divisor.get() == 2 {
             a ^ b
         } else {
             self.add_digits(a, b)
@@ -193,9 +193,13 @@ impl Field {
             let (a_rest, a_digit) = self.divisor.div_rem(a);
             let (b_rest, b_digit) = self.divisor.div_rem(b);
             let s = a_digit + b_digit;
-            sum += if s >= self.p { s - self.p } else { s } * place;
+            sum += if s >= self.divisor.get() {
+                s - self.divisor.get()
+            } else {
+                s
+            } * place;
             (a, b) = (a_rest, b_rest);
-            place *= self.p;
+            place *= self.divisor.get();
             i += 1;
         }
         sum
@@ -208,7 +212,7 @@ impl Field {
             let (rest, digit) = self.divisor.div_rem(a);
             product += self.divisor.div_rem(digit * c).1 * place;
             a = rest;
-            place *= self.p;
+            place *= self.divisor.get();
             i += 1;
         }
         product
@@ -223,7 +227,7 @@ impl Field {
             top = self.divisor.div_rem(top).0;
             i += 1;
         }
-        let shifted = (a - top * self.top_place) * self.p;
+        let shifted = (a - top * self.top_place) * self.divisor.get();
         self.add_digits(shifted, self.scale_digits(self.x_to_the_k, top))
     }
 
@@ -233,7 +237,7 @@ impl Field {
         if self.k == 1 {
             // a, b < 4096: the product fits in u32.
             self.divisor.div_rem(a * b).1
-        } else if self.p == 2 {
+        } else if self.divisor.get() == 2 {
             self.mul_binary(a, b)
         } else {
             self.mul_digits(a, b)
@@ -369,7 +373,7 @@ mod tests {
                     f.add(f.mul(a, b), f.mul(a, c)),
                     "GF({q})"
                 );
-                if f.p == 2 {
+                if f.divisor.get() == 2 {
                     assert_eq!(f.mul_binary(a, b), f.mul_digits(a, b), "GF({q})");
                     assert_eq!(f.add(a, b), f.add_digits(a, b));
                 }
@@ -377,7 +381,7 @@ mod tests {
             // The additive group has characteristic p: p copies of a sum to 0.
             let a = next(q);
             let mut sum = 0;
-            for _ in 0..f.p {
+            for _ in 0..f.divisor.get() {
                 sum = f.add(sum, a);
             }
             assert_eq!(sum, 0, "GF({q})");

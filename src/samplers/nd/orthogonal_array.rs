@@ -144,7 +144,8 @@ pub enum OrthogonalArrayOffset {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct OrthogonalArray {
     field: Field,
-    strength: u32,
+    /// `t`, 2 to 4 (a byte, so the pixel sampler's domain stays small).
+    strength: u8,
     dimensions: u32,
     offset: OrthogonalArrayOffset,
     /// `n = q^t`.
@@ -226,7 +227,8 @@ impl OrthogonalArray {
         )?;
         Ok(Self {
             field,
-            strength,
+            // 2 to 4, checked above.
+            strength: strength as u8,
             dimensions,
             offset: OrthogonalArrayOffset::default(),
             n: InvariantDivisor::new(n),
@@ -258,7 +260,7 @@ impl OrthogonalArray {
     /// The strength `t`: every `t`-dimensional projection is stratified.
     #[must_use]
     pub const fn strength(&self) -> u32 {
-        self.strength
+        self.strength as u32
     }
 
     /// The levels `q` per dimension (`n = q^t`).
@@ -331,11 +333,11 @@ impl OrthogonalArray {
     fn evaluate(&self, row: u32, x: u32) -> u32 {
         let mut digits = [0; 4];
         let mut rest = row;
-        for digit in digits.iter_mut().take(self.strength as usize) {
+        for digit in digits.iter_mut().take(usize::from(self.strength)) {
             (rest, *digit) = self.q.div_rem(rest);
         }
-        let mut value = digits[self.strength as usize - 1];
-        for &digit in digits[..self.strength as usize - 1].iter().rev() {
+        let mut value = digits[usize::from(self.strength) - 1];
+        for &digit in digits[..usize::from(self.strength) - 1].iter().rev() {
             value = self.field.add(self.field.mul(value, x), digit);
         }
         value
@@ -366,7 +368,7 @@ impl OrthogonalArray {
     /// other coefficients instead.)
     #[inline(always)]
     fn sub_index(&self, row: u32, pattern: &ArrayPattern, dimension: u32, column: u32) -> u32 {
-        let (q, t) = (self.q.get(), self.strength);
+        let (q, t) = (self.q.get(), self.strength());
         if t > q + 1 {
             // The coefficients other than the one the level fixes: a_1 ..
             // a_(t-1) for an evaluation, a_0 .. a_(t-2) for column q.
@@ -435,7 +437,7 @@ impl OrthogonalArray {
     /// with a `t`-th of its evaluations.
     #[inline(always)]
     fn sample_by_groups(&self, index: u32, row: u32, pattern: &ArrayPattern, out: &mut [f32]) {
-        let (q, t) = (self.q.get(), self.strength);
+        let (q, t) = (self.q.get(), self.strength());
         for (group, chunk) in (0..).zip(out.chunks_mut(t as usize)) {
             let base = group * t;
             let mut levels = [0; 4];
@@ -487,7 +489,7 @@ impl SamplerNd for OrthogonalArray {
         let out = check_nd_out(out, self.dimensions);
         let (index, pattern) = (reduce_index(index, self.n), self.pattern(pattern));
         let row = pattern.rows.apply(index);
-        if self.offset != OrthogonalArrayOffset::Jittered && self.strength <= self.q.get() + 1 {
+        if self.offset != OrthogonalArrayOffset::Jittered && self.strength() <= self.q.get() + 1 {
             self.sample_by_groups(index, row, &pattern, out);
             return;
         }

@@ -1,0 +1,184 @@
+//! `PaddedNd`: a domain's successive draws take consecutive dimensions of
+//! one set per pixel, so an orthogonal array stratifies them jointly and a
+//! Latin hypercube keeps each of them Latin; pages, padding, branches and
+//! passes.
+
+use wellspread::{
+    Domain, Error, LatinHypercube, OrthogonalArray, PaddedNd, PixelSampler, PixelSamplerKind,
+};
+
+/// The values of `draws` (widths) of sample `index` of `pixel`, flattened.
+fn values<S: PixelSampler + Copy>(
+    sampler: S,
+    pixel: [u32; 2],
+    index: u32,
+    widths: &[u32],
+) -> Vec<f32> {
+    let mut d: Domain<S> = sampler.start(pixel, index);
+    draws(&mut d, widths)
+}
+
+fn draws<S: PixelSampler + Copy>(d: &mut Domain<S>, widths: &[u32]) -> Vec<f32> {
+    widths
+        .iter()
+        .flat_map(|w| match w {
+            1 => vec![d.next_1d()],
+            2 => d.next_2d().to_array().to_vec(),
+            3 => d.next_3d().to_array().to_vec(),
+            _ => d.next_4d().to_array().to_vec(),
+        })
+        .collect()
+}
+
+/// Whether the pixel's `n = q^2` points, in the dimensions `a` and `b` of
+/// `points` (one row per sample), fill every cell of a `q x q` grid once.
+fn pair_stratified(points: &[Vec<f32>], q: usize, a: usize, b: usize) -> bool {
+    let mut cells = vec![0; q * q];
+    for p in points {
+        cells[(p[a] * q as f32) as usize * q + (p[b] * q as f32) as usize] += 1;
+    }
+    cells.iter().all(|&c| c == points.len() / (q * q))
+}
+
+/// Whether dimension `a` of `points` has one point in each of `n` strata.
+fn latin(points: &[Vec<f32>], a: usize) -> bool {
+    let n = points.len();
+    let mut seen = vec![false; n];
+    for p in points {
+        let s = (f64::from(p[a]) * n as f64) as usize;
+        if std::mem::replace(&mut seen[s], true) {
+            return false;
+        }
+    }
+    true
+}
+
+#[test]
+fn orthogonal_draws_are_stratified_jointly_across_draws() {
+    for (spp, q) in [(4, 2), (9, 3), (16, 4), (25, 5), (64, 8)] {
+        let page = q + 1;
+        for frame in [0, 7, u32::MAX] {
+            let sampler = PixelSamplerKind::Orthogonal
+                .build(spp, [64, 64], frame)
+                .unwrap();
+            for pixel in [[0, 0], [5, 9], [u32::MAX, 3]] {
+                // Film, lens, then 1D draws to the end of the page.
+                let widths = if page < 4 {
+                    vec![2, 1]
+                } else {
+                    let mut widths = vec![2, 2];
+                    widths.resize(page - 2, 1);
+                    widths
+                };
+                let points: Vec<Vec<f32>> = (0..spp)
+                    .map(|i| values(sampler, pixel, i, &widths))
+                    .collect();
+                for a in 0..page {
+                    assert!(latin(&points, a), "{spp} spp dimension {a}");
+                    for b in a + 1..page {
+                        assert!(
+                            pair_stratified(&points, q, a, b),
+                            "{spp} spp frame {frame} pixel {pixel:?}: dimensions {a} and {b}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn a_draw_past_the_page_is_padded_and_the_next_page_is_an_array() {
+    // 16 samples: q = 4, pages of 5 dimensions. Draws 2, 2 fill 0..4; the
+    // third 2D draw would cross into page 1, so it takes a fresh pattern
+    // (dimensions 4 and 5 are skipped); then a 1D and a 2D draw read
+    // dimensions 6, 7 and 8 of page 1.
+    let array = OrthogonalArray::new(16, 5, 2).unwrap();
+    let sampler = PaddedNd::new(array, 3);
+    let points: Vec<Vec<f32>> = (0..16)
+        .map(|i| values(sampler, [2, 3], i, &[2, 2, 2, 1, 2]))
+        .collect();
+    // The padded draw is a set of its own: stratified in its pair.
+    assert!(pair_stratified(&points, 4, 4, 5));
+    // Page 1's three dimensions are stratified jointly.
+    for (a, b) in [(6, 7), (6, 8), (7, 8)] {
+        assert!(pair_stratified(&points, 4, a, b), "{a} {b}");
+    }
+    // And page 1 is not page 0 again: the values differ.
+    assert!(points.iter().all(|p| p[6] != p[1]));
+    let mut d = sampler.start([2, 3], 0);
+    draws(&mut d, &[2, 2, 2, 1, 2]);
+    assert_eq!((d.draws(), d.dimensions()), (5, 9));
+}
+
+#[test]
+fn a_set_with_fewer_dimensions_than_a_draw_pads_within_the_draw() {
+    // One-dimensional Latin hypercube: every coordinate of a 4D draw comes
+    // from its own pattern, each Latin.
+    let sampler = PaddedNd::new(LatinHypercube::new(10, 1).unwrap(), 0);
+    let points: Vec<Vec<f32>> = (0..10)
+        .map(|i| values(sampler, [1, 1], i, &[4, 3]))
+        .collect();
+    for a in 0..7 {
+        assert!(latin(&points, a), "dimension {a}");
+    }
+    assert!(points.iter().all(|p| p[0] != p[1] && p[4] != p[0]));
+}
+
+#[test]
+fn latin_hypercube_draws_are_latin_in_every_dimension() {
+    for spp in [1, 2, 7, 16, 100] {
+        let sampler = PixelSamplerKind::LatinHypercube
+            .build(spp, [64, 64], 5)
+            .unwrap();
+        let widths = [1, 2, 3, 4, 2, 1];
+        let points: Vec<Vec<f32>> = (0..spp)
+            .map(|i| values(sampler, [4, 4], i, &widths))
+            .collect();
+        for a in 0..13 {
+            assert!(latin(&points, a), "{spp} spp dimension {a}");
+        }
+    }
+}
+
+#[test]
+fn branches_and_passes_get_fresh_arrays() {
+    let sampler = PixelSamplerKind::Orthogonal.build(16, [64, 64], 0).unwrap();
+    let parent: Vec<Vec<f32>> = (0..16)
+        .map(|i| values(sampler, [7, 7], i, &[2, 2]))
+        .collect();
+    let child: Vec<Vec<f32>> = (0..16)
+        .map(|i| draws(&mut sampler.start([7, 7], i).branch(1), &[2, 2]))
+        .collect();
+    // Pass 1 (indices 16..32) is a complete array of its own.
+    let pass: Vec<Vec<f32>> = (16..32)
+        .map(|i| values(sampler, [7, 7], i, &[2, 2]))
+        .collect();
+    for other in [&child, &pass] {
+        for (a, b) in [(0, 1), (0, 3), (1, 2)] {
+            assert!(pair_stratified(other, 4, a, b));
+        }
+        let shared = other
+            .iter()
+            .flatten()
+            .filter(|v| parent.iter().flatten().any(|p| p == *v))
+            .count();
+        assert_eq!(shared, 0, "a fresh array shares no value");
+    }
+}
+
+#[test]
+fn orthogonal_counts_that_are_not_squares_of_prime_powers_are_errors() {
+    for (spp, below, above) in [(8, 4, 9), (1, 0, 4), (100, 81, 121)] {
+        match PixelSamplerKind::Orthogonal.build(spp, [64, 64], 0) {
+            Err(Error::NotOrthogonalArraySize {
+                below: b, above: a, ..
+            }) => assert_eq!((b.unwrap_or(0), a), (below, Some(above))),
+            other => panic!("{spp}: {other:?}"),
+        }
+    }
+    assert_eq!(
+        PixelSamplerKind::LatinHypercube.build(0, [64, 64], 0),
+        Err(Error::ZeroSamples)
+    );
+}
