@@ -1,13 +1,12 @@
 //! The traits of the samplers ([`Sampler2D`] for every 2D one, [`Sequence2D`]
 //! for the progressive sequences, [`SamplerNd`] for the point sets of many
 //! dimensions, [`DomainSampler`] for the draws a [`Padded`](crate::Padded)
-//! pixel sampler makes through a 2D sampler, the crate-private `FillOn`)
-//! and the checks and draws their methods share.
+//! pixel sampler makes through a 2D sampler) and the checks and draws their
+//! methods share.
 
 use glam::{Vec2, Vec3, Vec4};
 
 use crate::primitives::{child_key, mix64, permute, rand_u32, salt, stratum_to_unit_f32};
-use crate::simd::Isa;
 
 /// A set of `len()` well-distributed points in `[0, 1)^2`, with random access.
 ///
@@ -324,14 +323,6 @@ pub fn stratified_1d(index: u32, n: u32, stream: u64, jitter: bool) -> f32 {
     stratum_to_unit_f32(stratum, n, bits)
 }
 
-/// `fill` on a chosen instruction set: what every sampler's
-/// [`Sampler2D::fill`] runs with [`Isa::best`], and what the tests run on
-/// every instruction set the CPU has.
-pub(crate) trait FillOn {
-    /// [`Sampler2D::fill`] on `isa`.
-    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]);
-}
-
 /// The index check every fixed-size `sample` shares (debug builds only;
 /// each sampler documents what a release build does with a bad index).
 #[inline(always)]
@@ -341,6 +332,7 @@ pub(crate) fn debug_check_index(index: u32, len: u32) {
 
 /// The panic every `fill` shares, so the message is the same everywhere.
 #[inline]
+#[track_caller]
 pub(crate) fn check_fill_len(requested: usize, len: u32) {
     assert!(
         requested <= len as usize,
@@ -351,6 +343,7 @@ pub(crate) fn check_fill_len(requested: usize, len: u32) {
 /// The panic every `fill_from` shares: indices `start..start + requested`
 /// must lie in the sequence's `0..2^32`, which never wraps around.
 #[inline]
+#[track_caller]
 pub(crate) fn check_fill_from(start: u32, requested: usize) {
     assert!(
         u64::from(start) + requested as u64 <= 1 << 32,

@@ -11,8 +11,7 @@ use super::{
     BlueMultiJittered, CorrelatedMultiJittered, Halton, Hammersley, Jittered, MultiJittered,
     NRooks, Pmj02, Random, Regular, Sobol,
 };
-use crate::simd::Isa;
-use crate::traits::{DomainSampler, FillOn, Sequence2D};
+use crate::traits::{DomainSampler, Sequence2D};
 use crate::{Error, Sampler2D};
 
 /// Declares the sampler list once: the kind enum, its names, the dispatching
@@ -110,14 +109,6 @@ macro_rules! sampler_kinds {
             fn fill(&self, pattern: u32, out: &mut [Vec2]) {
                 match self {
                     $(AnySampler::$variant(s) => s.fill(pattern, out),)*
-                }
-            }
-        }
-
-        impl FillOn for AnySampler {
-            fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
-                match self {
-                    $(AnySampler::$variant(s) => s.fill_on(isa, pattern, out),)*
                 }
             }
         }

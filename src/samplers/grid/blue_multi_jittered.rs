@@ -2,8 +2,7 @@ use glam::Vec2;
 
 use super::{CellOffset, Grid, GridPattern, Jitter, fill_grid};
 use crate::primitives::{InvariantDivisor, MAX_STRATA, Permutation, derived_key, hash_u32};
-use crate::simd::Isa;
-use crate::traits::{DomainSampler, FillOn, Sampler2D};
+use crate::traits::{DomainSampler, Sampler2D};
 use crate::{Error, SamplerKind};
 
 /// Multi-jittered sampling with a guaranteed minimum distance: correlated
@@ -263,19 +262,13 @@ impl Sampler2D for BlueMultiJittered {
     }
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        self.fill_on(Isa::best(), pattern, out);
+        fill_grid(&self.pattern(pattern), out);
     }
 }
 
 /// A domain's draws: 2D the sampler's own set, 1D stratified, 3D and 4D
 /// padded ([`DomainSampler`]'s defaults).
 impl DomainSampler for BlueMultiJittered {}
-
-impl FillOn for BlueMultiJittered {
-    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
-        fill_grid(&self.pattern(pattern), isa, out);
-    }
-}
 
 /// One pattern of [`BlueMultiJittered`]: the lattice, the pattern's offsets
 /// `s` (`offset_x`, in `[0, r)`) and `t` (`offset_y`, in `[0, c)`), its

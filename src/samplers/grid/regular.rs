@@ -3,8 +3,7 @@ use glam::Vec2;
 use super::jittered::JitteredPattern;
 use super::{Centre, Grid, GridPattern, fill_grid};
 use crate::primitives::hash_u32;
-use crate::simd::Isa;
-use crate::traits::{DomainSampler, FillOn, Sampler2D, stratified_1d};
+use crate::traits::{DomainSampler, Sampler2D, stratified_1d};
 use crate::{Error, SamplerKind};
 
 /// Cell centres of a `columns x rows` grid: the deterministic baseline that
@@ -107,7 +106,7 @@ impl Sampler2D for Regular {
     }
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        self.fill_on(Isa::best(), pattern, out);
+        fill_grid(&self.pattern(pattern), out);
     }
 }
 
@@ -117,11 +116,5 @@ impl DomainSampler for Regular {
     #[inline]
     fn domain_1d(&self, index: u32, stream: u64) -> f32 {
         stratified_1d(index, self.len(), stream, false)
-    }
-}
-
-impl FillOn for Regular {
-    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
-        fill_grid(&self.pattern(pattern), isa, out);
     }
 }
