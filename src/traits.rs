@@ -326,6 +326,7 @@ pub fn stratified_1d(index: u32, n: u32, stream: u64, jitter: bool) -> f32 {
 /// The index check every fixed-size `sample` shares (debug builds only;
 /// each sampler documents what a release build does with a bad index).
 #[inline(always)]
+#[track_caller]
 pub(crate) fn debug_check_index(index: u32, len: u32) {
     debug_assert!(index < len, "index {index} out of range 0..{len}");
 }

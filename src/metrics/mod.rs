@@ -46,11 +46,10 @@ mod double_double;
 mod spectrum;
 mod stratification;
 
-pub use crate::Error;
-pub use glam::Vec2;
+use glam::Vec2;
 
-#[doc(hidden)]
-pub use discrepancy::wraparound_l2_discrepancy_quadratic;
+use crate::Error;
+
 pub use discrepancy::{
     centered_l2_discrepancy, l2_star_discrepancy, star_discrepancy, wraparound_l2_discrepancy,
 };
