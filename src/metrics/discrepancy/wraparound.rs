@@ -589,6 +589,8 @@ mod tests {
         let g = ((n as f64) * 0.618_033_988_749_895).round() as usize | 1;
         let mut sobol = vec![Vec2::ZERO; n];
         crate::Sampler2D::fill(&crate::Sobol::new(n as u32).unwrap(), 9, &mut sobol);
+        let mut pmj = vec![Vec2::ZERO; n];
+        crate::Sampler2D::fill(&crate::Pmj02::new(n as u32).unwrap(), 9, &mut pmj);
         vec![
             (
                 "random",
@@ -628,7 +630,17 @@ mod tests {
                 "diagonal",
                 (0..n).map(|i| Vec2::splat(i as f32 / nf)).collect(),
             ),
+            (
+                "tiny and any f32",
+                (0..n)
+                    .map(|i| {
+                        let bits = crate::primitives::mix64(i as u64 ^ 9) % 0x3f80_0000;
+                        Vec2::new(unit(i, 10) * 1e-30, f32::from_bits(bits as u32))
+                    })
+                    .collect(),
+            ),
             ("sobol", sobol),
+            ("pmj02", pmj),
         ]
     }
 
