@@ -181,8 +181,7 @@ pub fn concentric_disk(u: Vec2) -> Vec2 {
 /// The density of [`concentric_disk`] with respect to area on the unit
 /// disk: `1 / pi`, for every point of the disk.
 ///
-/// It takes the point so that callers write the same code for every map;
-/// a point outside the unit disk has density 0. The disk's boundary is
+/// A point outside the unit disk has density 0. The disk's boundary is
 /// taken with a slack of `4 f32::EPSILON` in squared length (`|p| <= 1 +
 /// 2^-22`), so that every point [`concentric_disk`] returns, rounding
 /// included, has density `1 / pi`: `concentric_disk(2^-24, 0)` lands at
@@ -458,10 +457,8 @@ pub fn uniform_sphere(u: Vec2) -> Vec3 {
 }
 
 /// The density of [`uniform_sphere`] with respect to solid angle,
-/// `1 / (4 pi)`, for every direction.
-///
-/// It takes the direction so that callers write the same code for every
-/// map.
+/// `1 / (4 pi)`, for every direction (the argument is there for symmetry
+/// with [`uniform_hemisphere_pdf`], whose density depends on it).
 ///
 /// ```
 /// use wellspread::warp::uniform_sphere_pdf;
