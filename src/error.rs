@@ -457,7 +457,7 @@ impl fmt::Display for Error {
                     write!(
                         f,
                         "use at most {} samples per pixel per pass and average passes \
-                         with different seeds",
+                         with different frames",
                         1u64 << (32 - film_bits)
                     )
                 } else {

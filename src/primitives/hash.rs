@@ -57,7 +57,7 @@ pub(crate) const fn child_key(key: u64, salt: u64, child: u32) -> u64 {
     mix64(key ^ salt).wrapping_add((child as u64).wrapping_mul(salt::BRANCH_WEYL))
 }
 
-/// The pattern for one pixel, frame (or seed) and dimension pair.
+/// The pattern for one pixel, frame and dimension pair.
 ///
 /// Renderers call this once per pixel and dimension pair (pixel position,
 /// lens, time, ...) and pass the result as `pattern` to

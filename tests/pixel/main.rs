@@ -12,10 +12,10 @@ use wellspread::{Draw, Error, Padded, PixelSampler, Root, Sobol, ZSobol};
 #[test]
 fn zsobol_pixels_are_nets_in_every_dimension_pair() {
     // Every pixel of a non-square film (so the Morton square has unused
-    // pixels), odd and even m, several seeds and dimension pairs.
+    // pixels), odd and even m, several frames and dimension pairs.
     for spp in [1, 2, 4, 8, 16, 32, 64, 256] {
-        for seed in [0, 1, 0xdead_beef] {
-            let zsobol = ZSobol::new(spp, [13, 6], seed).unwrap();
+        for frame in [0, 1, 0xdead_beef] {
+            let zsobol = ZSobol::new(spp, [13, 6], frame).unwrap();
             for dimension in [0, 1, 2, 7, 1000] {
                 for y in 0..6 {
                     for x in 0..13 {
@@ -24,7 +24,7 @@ fn zsobol_pixels_are_nets_in_every_dimension_pair() {
                             .collect();
                         assert!(
                             is_net_base2(&points).unwrap(),
-                            "spp {spp} seed {seed} dimension {dimension} pixel ({x}, {y})"
+                            "spp {spp} frame {frame} dimension {dimension} pixel ({x}, {y})"
                         );
                     }
                 }
@@ -144,18 +144,18 @@ fn dependence(sampler: &impl PixelSampler, a: u32, b: u32) -> (f64, f64) {
 /// (255 degrees of freedom; threshold 400, exceeded by independent uniform
 /// samples with probability 1.7e-8), and their correlation is below
 /// 5 / sqrt(16384) (five standard deviations, two-sided 5.7e-7). Over the
-/// 4 pairings x 6 pairs of dimension pairs x 3 seeds here, the false-failure
+/// 4 pairings x 6 pairs of dimension pairs x 3 frames here, the false-failure
 /// rate for an independent sampler is below 1e-5; the samples are fixed,
 /// so the test is deterministic.
 #[test]
 fn zsobol_dimension_pairs_are_decorrelated() {
     let limit_r = 5.0 / (16384f64).sqrt();
-    for seed in [0, 1, 42] {
-        let zsobol = ZSobol::new(16, [32, 32], seed).unwrap();
+    for frame in [0, 1, 42] {
+        let zsobol = ZSobol::new(16, [32, 32], frame).unwrap();
         for (a, b) in [(0, 1), (0, 2), (1, 2), (0, 5), (3, 4), (7, 100)] {
             let (chi, r) = dependence(&zsobol, a, b);
-            assert!(chi < 400.0, "seed {seed} pairs {a},{b}: chi-square {chi}");
-            assert!(r < limit_r, "seed {seed} pairs {a},{b}: correlation {r}");
+            assert!(chi < 400.0, "frame {frame} pairs {a},{b}: chi-square {chi}");
+            assert!(r < limit_r, "frame {frame} pairs {a},{b}: correlation {r}");
         }
     }
     // Padded Sobol (per-pixel shuffles) passes too.
@@ -219,17 +219,17 @@ fn quad_error(sampler: &impl PixelSampler) -> f64 {
 /// (4 spp)^-1.5, while independent per-pixel patterns only average four
 /// errors of spp^-1.5, halving it: a ratio of about 2 x 4^-1.5 = 0.25
 /// (measured 0.15 to 0.38 over the cases below). The test asks for below
-/// 0.5 over 1024 quads; each seed's samples are fixed, so it is
+/// 0.5 over 1024 quads; each frame's samples are fixed, so it is
 /// deterministic.
 #[test]
 fn zsobol_quads_cancel_errors_on_a_smooth_integrand() {
     for spp in [4, 16] {
-        for seed in [0, 1] {
-            let z = quad_error(&ZSobol::new(spp, [64, 64], seed).unwrap());
-            let s = quad_error(&Padded::new(Sobol::new(spp).unwrap(), seed));
+        for frame in [0, 1] {
+            let z = quad_error(&ZSobol::new(spp, [64, 64], frame).unwrap());
+            let s = quad_error(&Padded::new(Sobol::new(spp).unwrap(), frame));
             assert!(
                 z < 0.5 * s,
-                "spp {spp} seed {seed}: zsobol {z:.3e} sobol {s:.3e}"
+                "spp {spp} frame {frame}: zsobol {z:.3e} sobol {s:.3e}"
             );
         }
     }

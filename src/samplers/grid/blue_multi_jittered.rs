@@ -224,7 +224,7 @@ impl BlueMultiJittered {
 
     /// The pattern with its per-pattern choices made.
     #[inline(always)]
-    fn pattern(&self, pattern: u32) -> BlueMultiJitteredPattern<'_> {
+    fn prepare(&self, pattern: u32) -> BlueMultiJitteredPattern<'_> {
         let pattern_hash = hash_u32(pattern);
         let grid = &self.grid;
         let (columns, rows) = (grid.columns(), grid.rows());
@@ -258,11 +258,11 @@ impl Sampler2D for BlueMultiJittered {
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        self.pattern(pattern).point(index)
+        self.prepare(pattern).point(index)
     }
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        fill_grid(&self.pattern(pattern), out);
+        fill_grid(&self.prepare(pattern), out);
     }
 }
 

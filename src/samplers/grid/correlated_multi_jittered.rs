@@ -96,11 +96,11 @@ impl Sampler2D for CorrelatedMultiJittered {
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        self.pattern(pattern).point(index)
+        self.prepare(pattern).point(index)
     }
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        let computed = self.pattern(pattern);
+        let computed = self.prepare(pattern);
         let (columns, rows) = (self.grid.columns(), self.grid.rows());
         // Short shuffles are already one nibble lookup; longer ones up to
         // SMALL_TABLE elements are hashed once per element here instead of
@@ -182,7 +182,7 @@ impl CorrelatedMultiJittered {
     /// The pattern with its three permutations; keys from one hash of the
     /// pattern by three cheap derivations.
     #[inline(always)]
-    fn pattern(&self, pattern: u32) -> CorrelatedMultiJitteredPattern<'_, Permutation> {
+    fn prepare(&self, pattern: u32) -> CorrelatedMultiJitteredPattern<'_, Permutation> {
         let pattern_hash = hash_u32(pattern);
         let grid = &self.grid;
         CorrelatedMultiJitteredPattern {

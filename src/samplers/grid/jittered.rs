@@ -97,7 +97,7 @@ impl Jittered {
     }
 
     #[inline(always)]
-    fn pattern(&self, pattern: u32) -> JitteredPattern<'_, Jitter> {
+    fn prepare(&self, pattern: u32) -> JitteredPattern<'_, Jitter> {
         let pattern_hash = hash_u32(pattern);
         JitteredPattern {
             grid: &self.grid,
@@ -115,11 +115,11 @@ impl Sampler2D for Jittered {
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        self.pattern(pattern).point(index)
+        self.prepare(pattern).point(index)
     }
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        fill_grid(&self.pattern(pattern), out);
+        fill_grid(&self.prepare(pattern), out);
     }
 }
 

@@ -100,7 +100,7 @@ impl Sampler2D for MultiJittered {
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        self.pattern(pattern).point(index)
+        self.prepare(pattern).point(index)
     }
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
@@ -117,7 +117,7 @@ impl Sampler2D for MultiJittered {
                 jitter: computed.jitter,
             }
         }
-        let computed = self.pattern(pattern);
+        let computed = self.prepare(pattern);
         // `rows >= columns`: the longer side decides the table.
         let rows = self.grid.rows() as usize;
         if rows <= 16 {
@@ -245,7 +245,7 @@ const fn line_key(seed: u32, line: u32) -> u32 {
 
 impl MultiJittered {
     #[inline(always)]
-    fn pattern(&self, pattern: u32) -> MultiJitteredPattern<'_, HashedLines> {
+    fn prepare(&self, pattern: u32) -> MultiJitteredPattern<'_, HashedLines> {
         let pattern_hash = hash_u32(pattern);
         MultiJitteredPattern {
             grid: &self.grid,

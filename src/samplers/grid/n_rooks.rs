@@ -71,7 +71,7 @@ impl NRooks {
     }
 
     #[inline(always)]
-    fn pattern(&self, pattern: u32) -> NRooksPattern<'_> {
+    fn prepare(&self, pattern: u32) -> NRooksPattern<'_> {
         let pattern_hash = hash_u32(pattern);
         NRooksPattern {
             grid: &self.grid,
@@ -90,11 +90,11 @@ impl Sampler2D for NRooks {
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        self.pattern(pattern).point(index)
+        self.prepare(pattern).point(index)
     }
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        fill_grid(&self.pattern(pattern), out);
+        fill_grid(&self.prepare(pattern), out);
     }
 }
 

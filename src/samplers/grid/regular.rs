@@ -85,7 +85,7 @@ impl Regular {
     /// A jittered pattern whose offset is the cell's centre: only the order
     /// in which indices visit the cells depends on `pattern`.
     #[inline(always)]
-    fn pattern(&self, pattern: u32) -> JitteredPattern<'_, Centre> {
+    fn prepare(&self, pattern: u32) -> JitteredPattern<'_, Centre> {
         JitteredPattern {
             grid: &self.grid,
             order: self.grid.cell_order(hash_u32(pattern)),
@@ -102,11 +102,11 @@ impl Sampler2D for Regular {
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        self.pattern(pattern).point(index)
+        self.prepare(pattern).point(index)
     }
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        fill_grid(&self.pattern(pattern), out);
+        fill_grid(&self.prepare(pattern), out);
     }
 }
 
