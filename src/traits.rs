@@ -209,15 +209,29 @@ pub trait Sequence2D: Sampler2D {
 /// stream, so every power-of-two prefix of a pixel keeps its net while two
 /// draws pair their samples as freely as prefixes allow.
 pub trait DomainSampler: Sampler2D {
+    /// Whether indices past [`len`](Sampler2D::len) continue one sequence
+    /// (`true`: the [`Sequence2D`] implementors, whose own docs say why)
+    /// or start a new pass of a fixed-size set (`false`, the default).
+    /// This is the crate's one progressive flag: [`locate`](Self::locate)
+    /// and [`Padded`](crate::Padded)'s
+    /// [`samples_per_pixel`](crate::PixelSampler::samples_per_pixel) read
+    /// it, and a test holds it equal to "implements [`Sequence2D`]" for
+    /// every [`SamplerKind`](crate::SamplerKind).
+    #[inline]
+    fn is_progressive(&self) -> bool {
+        false
+    }
+
     /// Where sample `index` of a domain keyed `key` lives: `(index in the
-    /// set, key of the set)`. The default is the fixed-size rule: indices
-    /// `p n .. (p + 1) n` are pass `p`, a complete set keyed by `p`. The
-    /// progressive sequences return `(index, key)`: indices past the count
-    /// continue the sequence.
+    /// set, key of the set)`. A progressive sampler
+    /// ([`is_progressive`](Self::is_progressive)) returns `(index, key)`:
+    /// indices past the count continue the sequence. A fixed-size set
+    /// follows the pass rule: indices `p n .. (p + 1) n` are pass `p`, a
+    /// complete set keyed by `p`.
     #[inline]
     fn locate(&self, index: u32, key: u64) -> (u32, u64) {
         let n = self.len();
-        if index < n || n == 0 {
+        if index < n || n == 0 || self.is_progressive() {
             (index, key)
         } else {
             (index % n, child_key(key, salt::PASS, index / n))
@@ -257,6 +271,10 @@ pub trait DomainSampler: Sampler2D {
 }
 
 impl<S: DomainSampler + ?Sized> DomainSampler for &S {
+    #[inline]
+    fn is_progressive(&self) -> bool {
+        (**self).is_progressive()
+    }
     #[inline]
     fn locate(&self, index: u32, key: u64) -> (u32, u64) {
         (**self).locate(index, key)

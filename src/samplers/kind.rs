@@ -115,6 +115,13 @@ macro_rules! sampler_kinds {
 
         impl DomainSampler for AnySampler {
             #[inline]
+            fn is_progressive(&self) -> bool {
+                match self {
+                    $(AnySampler::$variant(s) => s.is_progressive(),)*
+                }
+            }
+
+            #[inline]
             fn locate(&self, index: u32, key: u64) -> (u32, u64) {
                 match self {
                     $(AnySampler::$variant(s) => s.locate(index, key),)*
@@ -324,6 +331,18 @@ mod tests {
             sequences,
             [SamplerKind::Halton, SamplerKind::Sobol, SamplerKind::Pmj02]
         );
+    }
+
+    #[test]
+    fn the_progressive_flag_is_the_sequence_trait() {
+        for &kind in SamplerKind::ALL {
+            let sampler = kind.build(16).unwrap();
+            assert_eq!(
+                sampler.is_progressive(),
+                sampler.as_sequence().is_some(),
+                "{kind}"
+            );
+        }
     }
 
     #[test]

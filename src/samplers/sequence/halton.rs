@@ -138,8 +138,8 @@ impl Sampler2D for Halton {
 /// samples), 1D draws Sobol's, 3D and 4D padded.
 impl DomainSampler for Halton {
     #[inline]
-    fn locate(&self, index: u32, key: u64) -> (u32, u64) {
-        (index, key)
+    fn is_progressive(&self) -> bool {
+        true
     }
     #[inline]
     fn domain_1d(&self, index: u32, stream: u64) -> f32 {

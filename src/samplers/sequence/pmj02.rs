@@ -197,8 +197,8 @@ impl DigitalSequence for Pmj02 {
 /// dimension 0 anyway).
 impl DomainSampler for Pmj02 {
     #[inline]
-    fn locate(&self, index: u32, key: u64) -> (u32, u64) {
-        (index, key)
+    fn is_progressive(&self) -> bool {
+        true
     }
     #[inline]
     fn domain_1d(&self, index: u32, stream: u64) -> f32 {

@@ -168,8 +168,8 @@ impl DigitalSequence for Sobol {
 /// 0, 3D and 4D draws the 4D set ([`DomainSampler`]'s table).
 impl DomainSampler for Sobol {
     #[inline]
-    fn locate(&self, index: u32, key: u64) -> (u32, u64) {
-        (index, key)
+    fn is_progressive(&self) -> bool {
+        true
     }
     #[inline]
     fn domain_1d(&self, index: u32, stream: u64) -> f32 {
