@@ -430,7 +430,7 @@ fn build_errors_are_the_constructors() {
     ));
     assert!(matches!(
         z.build(4, [0, 8], 0),
-        Err(Error::ZeroGridSide { .. })
+        Err(Error::ZeroResolution { .. })
     ));
 }
 

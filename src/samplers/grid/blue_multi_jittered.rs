@@ -15,74 +15,33 @@ use lattice_search::Shape;
 /// close, and randomised per pattern by the symmetries that keep every
 /// distance.
 ///
-/// Cell `(row i, column j)` of the `columns x rows` grid (`c x r`, the most
-/// square factorisation, `c <= r`) holds the point of fine column
-/// `j r + ((g i + q j + s) mod r)` and fine row `i c + ((h j + p i + t) mod
-/// c)`, jittered inside that fine cell. The constructor picks `g`, `q`, `h`,
-/// `p` once per `n` (see below); a pattern picks the offsets `s`, `t`, a
-/// translation by whole coarse cells, a mirror image in x and in y, a
-/// transposition (square grids), the order of the cells and the jitter.
-/// `g` near `r / phi^2` and `h` near `c / phi` make each column's sequence of
-/// sub-columns a golden-ratio lattice rather than Kensler's random shuffle,
-/// and the coupling `q = -r / gcd(c, r)`, `p = -c / gcd(c, r)` (taken first
-/// when it keeps the bound) shifts that sequence from one column to the next,
-/// which cancels most of the error correlated multi-jitter makes on smooth
-/// integrands.
+/// Cell `(row i, column j)` of the most square `c x r` grid holds the point
+/// of fine column `j r + ((g i + q j + s) mod r)` and fine row `i c + ((h j
+/// + p i + t) mod c)`, jittered inside that fine cell: `g`, `q`, `h`, `p`
+/// are chosen once per `n`, the offsets, mirror images, translations, cell
+/// order and jitter per pattern. The construction, the order in which the
+/// constructor tries lattices, its diagonal test and the proof of the
+/// bound are in `docs/blue_multi_jittered.md`.
 ///
 /// # Properties
 ///
 /// - Stratified: exactly one point in each cell of the `columns x rows`
 ///   grid. Latin: exactly one point in each of the `n` columns and `n` rows
-///   of the fine grid. Both hold for every pattern because `g` is coprime to
-///   `r` and `h` to `c` (each column's sub-columns and each row's sub-rows
-///   are a permutation), checked exactly on the f32 values.
+///   of the fine grid. Both hold for every pattern, checked exactly on the
+///   f32 values.
 /// - A toroidal minimum distance of at least
-///   [`min_distance_bound`](Self::min_distance_bound) for every pattern.
-///   Proof: two points in cells `k` rows and `l` columns apart differ by
-///   `l r + a` fine columns and `k c + b` fine rows, where `a` is `A = (g k +
-///   q l) mod r` or `A - r` and `b` is `B = (h l + p k) mod c` or `B - c`,
-///   whatever `s`, `t` and the cells are (the mod is affine). The pattern's
-///   mirror images, translations and transposition are isometries of the
-///   torus, and the jitter moves each coordinate by less than the slack `S`
-///   (one fine cell at full jitter, less when it is narrowed). So every pair
-///   is at least `sqrt(max(0, |l r + a|_n - S)^2 + max(0, |k c + b|_n - S)^2)
-///   / n` apart, `|.|_n` the distance to the nearest multiple of `n`. The
-///   bound is the minimum of that over every `(k, l, a, b)`; the
-///   enumeration stops at `|k| > (U + S - 1) / c + 1` (likewise `l`), `U` the
-///   minimum over the cells within `1.2 sqrt(n)` fine cells, since farther
-///   pairs are more than `U` apart in y (or x) alone.
-/// - The constructor walks the `(g, q, h, p)` in the order above and keeps
-///   those whose bound divided by `sqrt(2 / (sqrt(3) n))` (the
-///   hexagonal-packing distance, as
-///   [`normalized_toroidal_min_distance`](crate::metrics::normalized_toroidal_min_distance))
-///   is at least 0.6 with the jitter narrowed to a quarter of a fine cell.
-///   Of those it takes the first that passes a diagonal test: a lattice
-///   with short vectors near `(1, 1)` or `(1, -1)` puts whole rows of points
-///   on one side of an edge along `y = x` together, and the mirror images
-///   turn the anti-diagonal into the diagonal. The test is
-///   exact counting: the mean squared error, in points, of the unjittered
-///   set on the half-plane `y < x` (only the cells the diagonal crosses can
-///   err; a point on the diagonal counts half, plus the variance of its
-///   jitter), over 16 fixed offsets `s`, `t` and the four mirror images,
-///   must be at most half that of independent uniform points in the same
-///   cells. If no coupled lattice (`q` and `p` from the first four
-///   multipliers; on coprime sides all of them give `q = p = 0`) passes, it
-///   takes the scored one with the least error (scores stop when their
-///   budget, see Cost, is spent); the uncoupled ones (`k = 0` on one side)
-///   come only when no coupled lattice keeps the bound. Then it widens the
-///   jitter (in sixteenths, up to the whole fine cell) as far as the bound
-///   allows. The test changes only which lattice is taken, so the bound and
-///   its proof are as above. For every `n` from 16 to 4096 but 24 the
-///   normalised bound is at least 0.6 (tested); measured minima and the
-///   integration errors are in `docs/quality.md`.
-/// - Where no lattice in that order reaches 0.6 at a quarter cell (some `n`
-///   below 16, and n = 24), the constructor takes the largest bound with the
-///   jitter at 1/16 of a fine cell, over every lattice for `n <= 256` (over
-///   the ordered ones above that), and widens the jitter as far as 0.6
-///   allows. The bound stays proved, but falls short of 0.6: 0.586 at n =
-///   24, the only such n from 16 to 4096 (no lattice of this form does
-///   better on a 4 x 6 grid with any jitter at all; unjittered points would
-///   reach 0.60, but then patterns could repeat whole sets).
+///   [`min_distance_bound`](Self::min_distance_bound) for every pattern
+///   (proved by an exhaustive enumeration over cell offsets; see
+///   `docs/blue_multi_jittered.md`).
+/// - That bound is at least 0.6 of the hexagonal-packing distance
+///   `sqrt(2 / (sqrt(3) n))` (as
+///   [`normalized_toroidal_min_distance`](crate::metrics::normalized_toroidal_min_distance)
+///   measures it) for every `n` from 16 to 4096 but 24, where it is 0.586
+///   (tested); below 16 it is the largest bound this lattice form reaches.
+/// - Its integration error stays within 1.1x multi-jitter's on smooth
+///   integrands (the constructor passes over lattices that line points up
+///   with a diagonal); measured minima and errors are in
+///   `docs/quality.md`.
 ///
 /// # Cost
 ///
@@ -159,6 +118,18 @@ struct Lattice {
     p: u32,
 }
 
+impl Lattice {
+    /// `(g, q, h, p)` as signed integers, for the search's arithmetic.
+    fn signed(&self) -> (i64, i64, i64, i64) {
+        (
+            i64::from(self.g),
+            i64::from(self.q),
+            i64::from(self.h),
+            i64::from(self.p),
+        )
+    }
+}
+
 /// Salts for the per-pattern choices, in the style of the crate's salts: odd, about
 /// half their bits set, distinct top five bits (the rotation
 /// [`derived_key`] applies).
@@ -208,8 +179,8 @@ impl BlueMultiJittered {
     /// set (as [`toroidal_min_distance`](crate::metrics::toroidal_min_distance)
     /// measures it on the f32 values), in units of the unit square;
     /// `f64::INFINITY` for `n = 1`, which has no pairs. Divide by
-    /// `sqrt(2 / (sqrt(3) n))` for the normalised form. The proof is in the
-    /// type's docs; computed by one enumeration (see Cost), rounded down.
+    /// `sqrt(2 / (sqrt(3) n))` for the normalised form. The proof is in
+    /// `docs/blue_multi_jittered.md`; computed by one enumeration (see Cost), rounded down.
     #[must_use]
     pub fn min_distance_bound(&self) -> f64 {
         let shape = Shape::of(&self.grid);

@@ -229,12 +229,7 @@ impl Shape {
         let n = c * r;
         let i0 = if view.mirror_y { r - 1 - i } else { i };
         let j0 = if view.mirror_x { c - 1 - j } else { j };
-        let (g, q, h, p) = (
-            lattice.g as i64,
-            lattice.q as i64,
-            lattice.h as i64,
-            lattice.p as i64,
-        );
+        let (g, q, h, p) = lattice.signed();
         let mut x = j0 * r + (g * i0 + q * j0 + view.s).rem_euclid(r);
         let mut y = i0 * c + (h * j0 + p * i0 + view.t).rem_euclid(c);
         if view.mirror_x {
@@ -265,14 +260,8 @@ impl Shape {
                 let hi = x0.max(y1).min(x1);
                 let area = 0.5 * (lo - y0 + hi - y0).max(0.0) * (hi - lo) + c as f64 * (x1 - hi);
                 let (x, y) = self.centre(lattice, view, i, j);
-                let below = if y < x {
-                    1.0
-                } else if y == x {
-                    ties += 0.25;
-                    0.5
-                } else {
-                    0.0
-                };
+                let (below, tie_variance) = below_diagonal(x, y);
+                ties += tie_variance;
                 let fraction = area / (c * r) as f64;
                 error += below - fraction;
                 independent += fraction * (1.0 - fraction);
@@ -336,12 +325,7 @@ impl Shape {
     fn min_over(self, lattice: &Lattice, slack: f64, reach_k: i64, reach_l: i64) -> f64 {
         let Self { c, r } = self;
         let n = c * r;
-        let (g, q, h, p) = (
-            lattice.g as i64,
-            lattice.q as i64,
-            lattice.h as i64,
-            lattice.p as i64,
-        );
+        let (g, q, h, p) = lattice.signed();
         let torus = |d: i64| {
             let m = d.rem_euclid(n);
             m.min(n - m) as f64
@@ -430,6 +414,18 @@ const fn gcd(mut a: i64, mut b: i64) -> i64 {
     a.abs()
 }
 
+/// How much a point at `(x, y)` counts below the diagonal `y = x`: 1 below
+/// it, 0 above, and a half on it, with the variance (1/4) of that half.
+fn below_diagonal(x: f64, y: f64) -> (f64, f64) {
+    if y < x {
+        (1.0, 0.0)
+    } else if y == x {
+        (0.5, 0.25)
+    } else {
+        (0.0, 0.0)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -449,12 +445,7 @@ mod tests {
     fn brute_force(shape: Shape, lattice: &Lattice, s: i64, t: i64) -> f64 {
         let Shape { c, r } = shape;
         let n = c * r;
-        let (g, q, h, p) = (
-            lattice.g as i64,
-            lattice.q as i64,
-            lattice.h as i64,
-            lattice.p as i64,
-        );
+        let (g, q, h, p) = lattice.signed();
         let points: std::vec::Vec<(i64, i64)> = (0..n)
             .map(|cell| {
                 let (i, j) = (cell / c, cell % c);
@@ -506,14 +497,9 @@ mod tests {
                     for i in 0..r {
                         for j in 0..c {
                             let (x, y) = shape.centre(&lattice, view, i, j);
-                            below += if y < x {
-                                1.0
-                            } else if y == x {
-                                ties += 0.25;
-                                0.5
-                            } else {
-                                0.0
-                            };
+                            let (count, tie_variance) = below_diagonal(x, y);
+                            below += count;
+                            ties += tie_variance;
                         }
                     }
                     let (error, tie_variance, independent) = shape.diagonal_error(&lattice, view);
