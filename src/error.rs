@@ -14,6 +14,11 @@ use crate::SamplerKind;
 pub enum Error {
     /// A sampler was asked for zero samples.
     ZeroSamples,
+    /// A pixel sampler's film was given a zero width or height.
+    ZeroResolution {
+        /// The film size asked for, `[width, height]`.
+        resolution: [u32; 2],
+    },
     /// A grid was asked for with zero columns or zero rows.
     ZeroGridSide {
         /// Columns asked for.
@@ -294,6 +299,12 @@ impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match *self {
             Error::ZeroSamples => f.write_str("a sampler needs at least one sample; got n = 0"),
+            Error::ZeroResolution {
+                resolution: [width, height],
+            } => write!(
+                f,
+                "a film needs a width and a height of at least one pixel; got {width} x {height}"
+            ),
             Error::ZeroGridSide { columns, rows } => write!(
                 f,
                 "a grid needs at least one column and one row; got {columns} x {rows}"
@@ -303,10 +314,7 @@ impl fmt::Display for Error {
                 requested,
                 max,
                 reason,
-            } => write!(
-                f,
-                "{sampler} accepts at most {max} samples, got {requested}: {reason}"
-            ),
+            } => too_many(f, &sampler, requested, max, reason),
             Error::GridTooFine {
                 sampler,
                 columns,
@@ -323,10 +331,7 @@ impl fmt::Display for Error {
                 requested,
                 max,
                 reason,
-            } => write!(
-                f,
-                "{sampler} accepts at most {max} samples, got {requested}: {reason}"
-            ),
+            } => too_many(f, &sampler, requested.into(), max.into(), reason),
             Error::DimensionsOutOfRange {
                 sampler,
                 dimensions: 0,
@@ -457,7 +462,7 @@ impl fmt::Display for Error {
                     write!(
                         f,
                         "use at most {} samples per pixel per pass and average passes \
-                         with different seeds",
+                         with different frames",
                         1u64 << (32 - film_bits)
                     )
                 } else {
@@ -499,6 +504,20 @@ impl fmt::Display for Error {
 }
 
 impl core::error::Error for Error {}
+
+/// The message of [`Error::TooManySamples`] and [`Error::TooManyNdSamples`].
+fn too_many(
+    f: &mut fmt::Formatter<'_>,
+    sampler: &dyn fmt::Display,
+    requested: u64,
+    max: u64,
+    reason: &str,
+) -> fmt::Result {
+    write!(
+        f,
+        "{sampler} accepts at most {max} samples, got {requested}: {reason}"
+    )
+}
 
 #[cfg(all(test, feature = "alloc"))]
 mod tests {

@@ -83,7 +83,6 @@ use core::f64::consts::PI;
 use glam::Vec2;
 
 use crate::Error;
-use crate::primitives::ONE_MINUS_EPSILON;
 
 /// One filter sample: where the sample goes relative to the pixel centre,
 /// and the weight its radiance gets.
@@ -122,11 +121,11 @@ pub trait Filter {
     fn weight_magnitude(&self) -> f32;
 }
 
-/// Clamps a coordinate to `[0, ONE_MINUS_EPSILON]` (NaN to 0) and widens it.
+/// Clamps a coordinate to `[0, ONE_MINUS_EPSILON]` (NaN to 0) as the warps
+/// do, and widens it.
 #[inline]
-#[allow(clippy::manual_clamp)] // `clamp` keeps a NaN; `max` first maps it to 0.
-fn unit(x: f32) -> f64 {
-    f64::from(x.max(0.0).min(ONE_MINUS_EPSILON))
+fn clamp_unit_f64(x: f32) -> f64 {
+    f64::from(crate::warp::clamp_unit(x))
 }
 
 /// A filter parameter that must be finite and positive.
@@ -148,7 +147,7 @@ fn positive(filter: &'static str, parameter: &'static str, value: f32) -> Result
 /// the map stays increasing.
 #[inline]
 fn split(u: f32) -> (f64, f64) {
-    let s = 2.0 * unit(u) - 1.0;
+    let s = 2.0 * clamp_unit_f64(u) - 1.0;
     (if s < 0.0 { -1.0 } else { 1.0 }, s.abs())
 }
 
@@ -239,7 +238,7 @@ impl BoxFilter {
 
     #[inline]
     fn sample_1d(&self, u: f32) -> (f64, f64) {
-        (self.radius * (2.0 * unit(u) - 1.0), 1.0)
+        (self.radius * (2.0 * clamp_unit_f64(u) - 1.0), 1.0)
     }
 
     #[inline]
@@ -420,7 +419,7 @@ impl GaussianFilter {
 
     #[inline]
     fn sample_1d(&self, u: f32) -> (f64, f64) {
-        let t = (2.0 * unit(u) - 1.0) * self.erf_radius;
+        let t = (2.0 * clamp_unit_f64(u) - 1.0) * self.erf_radius;
         let x = self.sigma * core::f64::consts::SQRT_2 * erf_inv(t);
         (x.clamp(-self.radius, self.radius), 1.0)
     }

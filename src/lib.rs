@@ -39,10 +39,12 @@
 //!
 //! A renderer asks for samples by pixel, sample index and dimension pair
 //! (film position, lens, time, light, ...): that is [`PixelSampler`].
-//! [`Padded`] makes one of any [`Sampler2D`] (each pixel and dimension pair
-//! an independent pattern from [`pattern_seed`]); [`ZSobol`] (at its
-//! power-of-two count) and [`BlueNoise`] (at every prefix, any count)
-//! spread the error across pixels as blue noise. [`PixelSampler::start`]
+//! [`Padded`] makes one of any [`Sampler2D`] that implements
+//! [`DomainSampler`] (every sampler of the crate does; for one of your own,
+//! an empty `impl DomainSampler for MySampler {}` takes the defaults), each
+//! pixel and dimension pair an independent pattern from [`pattern_seed`];
+//! [`ZSobol`] (at its power-of-two count) and [`BlueNoise`] (at every
+//! prefix, any count) spread the error across pixels as blue noise. [`PixelSampler::start`]
 //! makes a [`Domain`], the owned state of one pixel sample that hands out
 //! draws of one to four dimensions and keyed child domains
 //! ([`PixelSampler`] shows a path tracer's loop), and [`warp`] maps those

@@ -77,8 +77,15 @@ impl Isa {
 
     /// The widest instruction set this CPU runs (detected once by `std`
     /// and cached); [`Isa::Portable`] without `simd` or `std`, or off x86.
+    /// In the crate's unit tests, the set [`with_isa`] forces on this
+    /// thread, if any: the one test seam, so that every `fill` and
+    /// `fill_from` is tested on every path through its ordinary call.
     #[inline]
     pub(crate) fn best() -> Isa {
+        #[cfg(test)]
+        if let Some(isa) = FORCED.with(core::cell::Cell::get) {
+            return isa;
+        }
         if Isa::Avx512.is_supported() {
             Isa::Avx512
         } else if Isa::Avx2.is_supported() {
@@ -122,11 +129,27 @@ impl Isa {
     }
 }
 
+#[cfg(test)]
+std::thread_local! {
+    /// The instruction set [`with_isa`] forces on this thread.
+    static FORCED: core::cell::Cell<Option<Isa>> = const { core::cell::Cell::new(None) };
+}
+
+/// Runs `f` with [`Isa::best`] returning `isa` on this thread (the tests'
+/// override; a set the CPU lacks runs the portable loop).
+#[cfg(test)]
+pub(crate) fn with_isa<R>(isa: Isa, f: impl FnOnce() -> R) -> R {
+    let previous = FORCED.with(|forced| forced.replace(Some(isa)));
+    let result = f();
+    FORCED.with(|forced| forced.set(previous));
+    result
+}
+
 /// Writes `kernel`'s points `start, start + 1, ...` into `out` on
-/// instruction set `isa`, or on the portable loop if the CPU lacks it.
-/// Callers keep `start + out.len() <= 2^32`.
-pub(crate) fn fill_on<K: Kernel>(isa: Isa, kernel: &K, start: u32, out: &mut [Vec2]) {
+/// [`Isa::best`]. Callers keep `start + out.len() <= 2^32`.
+pub(crate) fn fill<K: Kernel>(kernel: &K, start: u32, out: &mut [Vec2]) {
     debug_assert!(start as u64 + out.len() as u64 <= 1 << 32);
+    let isa = Isa::best();
     #[cfg(all(
         feature = "simd",
         feature = "std",
@@ -206,8 +229,18 @@ fn fill_lanes<K: Kernel, const N: usize>(kernel: &K, start: u32, out: &mut [Vec2
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::traits::FillOn;
     use crate::{Sampler2D, SamplerKind};
+
+    /// Asserts that `fill` wrote exactly `sample`'s bits.
+    fn assert_bits(got: &[Vec2], expected: &[Vec2], what: &dyn core::fmt::Display) {
+        for (i, (a, b)) in got.iter().zip(expected).enumerate() {
+            assert_eq!(
+                (a.x.to_bits(), a.y.to_bits()),
+                (b.x.to_bits(), b.y.to_bits()),
+                "{what} index {i}"
+            );
+        }
+    }
 
     #[test]
     fn every_path_is_bit_identical_to_sample() {
@@ -228,17 +261,59 @@ mod tests {
                         (0..n).map(|i| sampler.sample(i, pattern)).collect();
                     for &isa in &supported {
                         let mut out = std::vec![Vec2::NAN; n as usize];
-                        sampler.fill_on(isa, pattern, &mut out);
-                        for (i, (a, b)) in out.iter().zip(&expected).enumerate() {
-                            assert_eq!(
-                                (a.x.to_bits(), a.y.to_bits()),
-                                (b.x.to_bits(), b.y.to_bits()),
-                                "{kind} n {n} pattern {pattern:#x} index {i} on {isa:?}"
-                            );
-                        }
+                        with_isa(isa, || sampler.fill(pattern, &mut out));
+                        let what =
+                            std::format!("{kind} n {n} pattern {pattern:#x} fill on {isa:?}");
+                        assert_bits(&out, &expected, &what);
                     }
                 }
             }
         }
+    }
+
+    #[test]
+    fn every_path_of_fill_from_is_bit_identical_to_sample() {
+        let supported: std::vec::Vec<Isa> = Isa::ALL
+            .into_iter()
+            .filter(|isa| isa.is_supported())
+            .collect();
+        for &kind in SamplerKind::ALL {
+            let sampler = kind.build(16).unwrap();
+            let Some(sequence) = sampler.as_sequence() else {
+                continue;
+            };
+            // Runs that start off a batch boundary, cross 2^24 and end at
+            // the last index, with remainders after 8 and 16 lanes.
+            for (start, len) in [
+                (0, 100),
+                (5, 37),
+                (1000, 17),
+                ((1 << 24) - 9, 40),
+                (u32::MAX - 40, 41),
+            ] {
+                for pattern in [0, 0x9e37_79b9] {
+                    let expected: std::vec::Vec<Vec2> = (0..len)
+                        .map(|i| sequence.sample(start + i, pattern))
+                        .collect();
+                    for &isa in &supported {
+                        let mut out = std::vec![Vec2::NAN; len as usize];
+                        with_isa(isa, || sequence.fill_from(start, pattern, &mut out));
+                        let what = std::format!(
+                            "{kind} start {start} pattern {pattern:#x} fill_from on {isa:?}"
+                        );
+                        assert_bits(&out, &expected, &what);
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_override_reaches_isa_best_and_is_undone() {
+        let outside = Isa::best();
+        with_isa(Isa::PortableWide, || {
+            assert_eq!(Isa::best(), Isa::PortableWide)
+        });
+        assert_eq!(Isa::best(), outside);
     }
 }

@@ -1,13 +1,12 @@
 //! The traits of the samplers ([`Sampler2D`] for every 2D one, [`Sequence2D`]
 //! for the progressive sequences, [`SamplerNd`] for the point sets of many
 //! dimensions, [`DomainSampler`] for the draws a [`Padded`](crate::Padded)
-//! pixel sampler makes through a 2D sampler, the crate-private `FillOn`)
-//! and the checks and draws their methods share.
+//! pixel sampler makes through a 2D sampler) and the checks and draws their
+//! methods share.
 
 use glam::{Vec2, Vec3, Vec4};
 
 use crate::primitives::{locate_pass, mix64, permute, rand_u32, salt, stratum_to_unit_f32};
-use crate::simd::Isa;
 
 /// A set of `len()` well-distributed points in `[0, 1)^2`, with random access.
 ///
@@ -210,14 +209,32 @@ pub trait Sequence2D: Sampler2D {
 /// stream, so every power-of-two prefix of a pixel keeps its net while two
 /// draws pair their samples as freely as prefixes allow.
 pub trait DomainSampler: Sampler2D {
+    /// Whether indices past [`len`](Sampler2D::len) continue one sequence
+    /// (`true`: the [`Sequence2D`] implementors, whose own docs say why)
+    /// or start a new pass of a fixed-size set (`false`, the default).
+    /// This is the crate's one progressive flag: [`locate`](Self::locate)
+    /// and [`Padded`](crate::Padded)'s
+    /// [`samples_per_pixel`](crate::PixelSampler::samples_per_pixel) read
+    /// it, and a test holds it equal to "implements [`Sequence2D`]" for
+    /// every [`SamplerKind`](crate::SamplerKind).
+    #[inline]
+    fn is_progressive(&self) -> bool {
+        false
+    }
+
     /// Where sample `index` of a domain keyed `key` lives: `(index in the
-    /// set, key of the set)`. The default is the fixed-size rule: indices
-    /// `p n .. (p + 1) n` are pass `p`, a complete set keyed by `p`. The
-    /// progressive sequences return `(index, key)`: indices past the count
-    /// continue the sequence.
+    /// set, key of the set)`. A progressive sampler
+    /// ([`is_progressive`](Self::is_progressive)) returns `(index, key)`:
+    /// indices past the count continue the sequence. A fixed-size set
+    /// follows the pass rule: indices `p n .. (p + 1) n` are pass `p`, a
+    /// complete set keyed by `p`.
     #[inline]
     fn locate(&self, index: u32, key: u64) -> (u32, u64) {
-        locate_pass(index, self.len(), key)
+        if self.is_progressive() {
+            (index, key)
+        } else {
+            locate_pass(index, self.len(), key)
+        }
     }
 
     /// Sample `index` of the 1D set picked by `stream`. The default is
@@ -253,6 +270,10 @@ pub trait DomainSampler: Sampler2D {
 }
 
 impl<S: DomainSampler + ?Sized> DomainSampler for &S {
+    #[inline]
+    fn is_progressive(&self) -> bool {
+        (**self).is_progressive()
+    }
     #[inline]
     fn locate(&self, index: u32, key: u64) -> (u32, u64) {
         (**self).locate(index, key)
@@ -319,23 +340,17 @@ pub fn stratified_1d(index: u32, n: u32, stream: u64, jitter: bool) -> f32 {
     stratum_to_unit_f32(stratum, n, bits)
 }
 
-/// `fill` on a chosen instruction set: what every sampler's
-/// [`Sampler2D::fill`] runs with [`Isa::best`], and what the tests run on
-/// every instruction set the CPU has.
-pub(crate) trait FillOn {
-    /// [`Sampler2D::fill`] on `isa`.
-    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]);
-}
-
 /// The index check every fixed-size `sample` shares (debug builds only;
 /// each sampler documents what a release build does with a bad index).
 #[inline(always)]
+#[track_caller]
 pub(crate) fn debug_check_index(index: u32, len: u32) {
     debug_assert!(index < len, "index {index} out of range 0..{len}");
 }
 
 /// The panic every `fill` shares, so the message is the same everywhere.
 #[inline]
+#[track_caller]
 pub(crate) fn check_fill_len(requested: usize, len: u32) {
     assert!(
         requested <= len as usize,
@@ -346,6 +361,7 @@ pub(crate) fn check_fill_len(requested: usize, len: u32) {
 /// The panic every `fill_from` shares: indices `start..start + requested`
 /// must lie in the sequence's `0..2^32`, which never wraps around.
 #[inline]
+#[track_caller]
 pub(crate) fn check_fill_from(start: u32, requested: usize) {
     assert!(
         u64::from(start) + requested as u64 <= 1 << 32,

@@ -93,14 +93,14 @@ const FOUR_OVER_PI: f32 = 4.0 / PI;
 /// sample coordinate must stay below 1.
 #[inline]
 #[allow(clippy::manual_clamp)] // `clamp` keeps a NaN; `max` first maps it to 0.
-fn unit(x: f32) -> f32 {
+pub(crate) fn clamp_unit(x: f32) -> f32 {
     x.max(0.0).min(ONE_MINUS_EPSILON)
 }
 
 /// Clamps both coordinates of a map's input into `[0, 1)` (NaN to 0).
 #[inline]
-fn unit2(u: Vec2) -> Vec2 {
-    Vec2::new(unit(u.x), unit(u.y))
+fn clamp_unit2(u: Vec2) -> Vec2 {
+    Vec2::new(clamp_unit(u.x), clamp_unit(u.y))
 }
 
 /// How far past the unit circle [`concentric_disk`]'s rounding may land,
@@ -113,7 +113,7 @@ const DISK_SLACK: f32 = 4.0 * f32::EPSILON;
 fn turn_fraction(x: f32, y: f32) -> f32 {
     let phi = libm::atan2f(y, x) * (1.0 / TAU);
     // atan2 is in [-pi, pi]: negative angles wrap to the upper half.
-    unit(if phi < 0.0 { phi + 1.0 } else { phi })
+    clamp_unit(if phi < 0.0 { phi + 1.0 } else { phi })
 }
 
 /// The concentric map of Shirley and Chiu: the unit square onto the unit
@@ -165,7 +165,7 @@ fn turn_fraction(x: f32, y: f32) -> f32 {
 /// Journal of Graphics Tools 2(3).
 #[inline]
 pub fn concentric_disk(u: Vec2) -> Vec2 {
-    let o = 2.0 * unit2(u) - Vec2::ONE;
+    let o = 2.0 * clamp_unit2(u) - Vec2::ONE;
     if o.x == 0.0 && o.y == 0.0 {
         return Vec2::ZERO;
     }
@@ -181,8 +181,7 @@ pub fn concentric_disk(u: Vec2) -> Vec2 {
 /// The density of [`concentric_disk`] with respect to area on the unit
 /// disk: `1 / pi`, for every point of the disk.
 ///
-/// It takes the point so that callers write the same code for every map;
-/// a point outside the unit disk has density 0. The disk's boundary is
+/// A point outside the unit disk has density 0. The disk's boundary is
 /// taken with a slack of `4 f32::EPSILON` in squared length (`|p| <= 1 +
 /// 2^-22`), so that every point [`concentric_disk`] returns, rounding
 /// included, has density `1 / pi`: `concentric_disk(2^-24, 0)` lands at
@@ -241,7 +240,7 @@ pub fn concentric_disk_inverse(p: Vec2) -> Vec2 {
         Vec2::ZERO
     };
     let u = 0.5 * (o + Vec2::ONE);
-    Vec2::new(unit(u.x), unit(u.y))
+    Vec2::new(clamp_unit(u.x), clamp_unit(u.y))
 }
 
 /// Cosine-weighted directions on the hemisphere `z >= 0` (Malley's
@@ -369,7 +368,7 @@ pub fn cosine_hemisphere_inverse(v: Vec3) -> Vec2 {
 /// section A.5.2.
 #[inline]
 pub fn uniform_hemisphere(u: Vec2) -> Vec3 {
-    let u = unit2(u);
+    let u = clamp_unit2(u);
     let z = u.x;
     let r = libm::sqrtf(((1.0 - z) * (1.0 + z)).max(0.0));
     let (sin, cos) = libm::sincosf(TAU * u.y);
@@ -410,7 +409,7 @@ pub fn uniform_hemisphere_pdf(v: Vec3) -> f32 {
 /// ```
 #[inline]
 pub fn uniform_hemisphere_inverse(v: Vec3) -> Vec2 {
-    Vec2::new(unit(v.z), turn_fraction(v.x, v.y))
+    Vec2::new(clamp_unit(v.z), turn_fraction(v.x, v.y))
 }
 
 /// Uniform directions on the whole sphere: `z = 1 - 2 u.x`, azimuth
@@ -449,7 +448,7 @@ pub fn uniform_hemisphere_inverse(v: Vec3) -> Vec2 {
 /// section A.5.2.
 #[inline]
 pub fn uniform_sphere(u: Vec2) -> Vec3 {
-    let u = unit2(u);
+    let u = clamp_unit2(u);
     let z = 1.0 - 2.0 * u.x;
     // 1 - z^2 = 4 u.x (1 - u.x): no cancellation near either pole.
     let r = 2.0 * libm::sqrtf((u.x * (1.0 - u.x)).max(0.0));
@@ -458,10 +457,8 @@ pub fn uniform_sphere(u: Vec2) -> Vec3 {
 }
 
 /// The density of [`uniform_sphere`] with respect to solid angle,
-/// `1 / (4 pi)`, for every direction.
-///
-/// It takes the direction so that callers write the same code for every
-/// map.
+/// `1 / (4 pi)`, for every direction (the argument is there for symmetry
+/// with [`uniform_hemisphere_pdf`], whose density depends on it).
 ///
 /// ```
 /// use wellspread::warp::uniform_sphere_pdf;
@@ -486,7 +483,7 @@ pub fn uniform_sphere_pdf(v: Vec3) -> f32 {
 /// ```
 #[inline]
 pub fn uniform_sphere_inverse(v: Vec3) -> Vec2 {
-    Vec2::new(unit(0.5 * (1.0 - v.z)), turn_fraction(v.x, v.y))
+    Vec2::new(clamp_unit(0.5 * (1.0 - v.z)), turn_fraction(v.x, v.y))
 }
 
 /// Uniform barycentric coordinates `(b0, b1, b2)` on a triangle, by
@@ -538,7 +535,7 @@ pub fn uniform_sphere_inverse(v: Vec3) -> Vec2 {
 /// technical report, Unity Technologies (hal-02073696).
 #[inline]
 pub fn uniform_triangle(u: Vec2) -> Vec3 {
-    let u = unit2(u);
+    let u = clamp_unit2(u);
     if u.x < u.y {
         let b0 = 0.5 * u.x;
         Vec3::new(b0, u.y - b0, 1.0 - u.y)
@@ -582,11 +579,11 @@ pub fn uniform_triangle_pdf(area: f32) -> f32 {
 /// ```
 #[inline]
 pub fn uniform_triangle_inverse(b: Vec3) -> Vec2 {
-    let sum = unit(b.x + b.y);
+    let sum = clamp_unit(b.x + b.y);
     if b.x < b.y {
-        Vec2::new(unit(2.0 * b.x), sum)
+        Vec2::new(clamp_unit(2.0 * b.x), sum)
     } else {
-        Vec2::new(sum, unit(2.0 * b.y))
+        Vec2::new(sum, clamp_unit(2.0 * b.y))
     }
 }
 
@@ -661,7 +658,7 @@ pub fn discrete(u: f32, n: u32) -> (u32, f32) {
         "discrete: u = {u} is outside [0, 1)"
     );
     let n = n.max(1);
-    let u = unit(u);
+    let u = clamp_unit(u);
     // u = m 2^-shift exactly, with m below 2^24 (so u n = m n 2^-shift,
     // exact in 56 bits); subnormals have the smallest exponent.
     let bits = u.to_bits();
@@ -678,14 +675,14 @@ pub fn discrete(u: f32, n: u32) -> (u32, f32) {
     if shift >= 64 {
         // u n < 2^-8: the choice is 0, and the f32 product (two roundings)
         // is as accurate as the caller's u.
-        return (0, unit(u * n as f32));
+        return (0, clamp_unit(u * n as f32));
     }
     let scaled = u64::from(m) * u64::from(n);
     let index = (scaled >> shift) as u32;
     let rest = scaled & ((1u64 << shift) - 1);
     // rest 2^-shift, rounded once to f32 (the scaling by a power of two is exact).
     let remapped = (rest as f32) * f32::from_bits((127 - shift) << 23);
-    (index, unit(remapped))
+    (index, clamp_unit(remapped))
 }
 
 /// [`discrete`] for an `n` that may be 0: `None` for `n = 0`, otherwise
@@ -730,7 +727,7 @@ pub fn discrete_pdf(n: u32) -> f32 {
 #[inline]
 pub fn discrete_inverse(index: u32, remapped: f32, n: u32) -> f32 {
     let n = n.max(1);
-    unit(((f64::from(index) + f64::from(remapped)) / f64::from(n)) as f32)
+    clamp_unit(((f64::from(index) + f64::from(remapped)) / f64::from(n)) as f32)
 }
 
 // ---------------------------------------------------------------------------
@@ -796,7 +793,7 @@ fn cone_cos(cos_theta_max: f32) -> f32 {
 /// section A.5.4 (sampling a cone).
 #[inline]
 pub fn uniform_cone(u: Vec2, cos_theta_max: f32) -> Vec3 {
-    let u = unit2(u);
+    let u = clamp_unit2(u);
     let one_minus_cos = u.x * (1.0 - cone_cos(cos_theta_max));
     let r = libm::sqrtf((one_minus_cos * (2.0 - one_minus_cos)).max(0.0));
     let (sin, cos) = libm::sincosf(TAU * u.y);
@@ -840,7 +837,7 @@ pub fn uniform_cone_inverse(v: Vec3, cos_theta_max: f32) -> Vec2 {
         1.0 - v.z
     };
     Vec2::new(
-        unit(one_minus_cos / (1.0 - cone_cos(cos_theta_max))),
+        clamp_unit(one_minus_cos / (1.0 - cone_cos(cos_theta_max))),
         turn_fraction(v.x, v.y),
     )
 }
@@ -882,7 +879,7 @@ pub fn uniform_cone_inverse(v: Vec3, cos_theta_max: f32) -> Vec2 {
 /// section A.5.2 (the sphere), with the radius by inversion of `r^3`.
 #[inline]
 pub fn uniform_ball(u: Vec3) -> Vec3 {
-    libm::cbrtf(unit(u.z)) * uniform_sphere(Vec2::new(u.x, u.y))
+    libm::cbrtf(clamp_unit(u.z)) * uniform_sphere(Vec2::new(u.x, u.y))
 }
 
 /// The density of [`uniform_ball`] with respect to volume, `3 / (4 pi)`
@@ -920,7 +917,7 @@ pub fn uniform_ball_inverse(p: Vec3) -> Vec3 {
     if r == 0.0 {
         return Vec3::ZERO;
     }
-    uniform_sphere_inverse(p / r).extend(unit(r * r * r))
+    uniform_sphere_inverse(p / r).extend(clamp_unit(r * r * r))
 }
 
 /// Uniform points on the parallelogram (a rectangle when the edges are
@@ -956,7 +953,7 @@ pub fn uniform_ball_inverse(p: Vec3) -> Vec3 {
 /// section 12.5 (area lights).
 #[inline]
 pub fn rectangle(u: Vec2, corner: Vec3, ex: Vec3, ey: Vec3) -> Vec3 {
-    let u = unit2(u);
+    let u = clamp_unit2(u);
     corner + u.x * ex + u.y * ey
 }
 
@@ -998,8 +995,8 @@ pub fn rectangle_inverse(p: Vec3, corner: Vec3, ex: Vec3, ey: Vec3) -> Vec2 {
         return Vec2::ZERO;
     }
     Vec2::new(
-        unit(((bx * yy - by * xy) / det) as f32),
-        unit(((by * xx - bx * xy) / det) as f32),
+        clamp_unit(((bx * yy - by * xy) / det) as f32),
+        clamp_unit(((by * xx - bx * xy) / det) as f32),
     )
 }
 
@@ -1156,7 +1153,7 @@ pub fn spherical_triangle(u: Vec2, a: Vec3, b: Vec3, c: Vec3, p: Vec3) -> (Vec3,
     let Some(t) = SphericalTriangle::new(a, b, c, p) else {
         return degenerate_triangle(a, b, c, p);
     };
-    let u = unit2(u).as_dvec2();
+    let u = clamp_unit2(u).as_dvec2();
     // The angle alpha at A, between the planes of A B and A C:
     // |(A x B) x (A x C)| = |A . (B x C)|.
     let (nab, nac) = (t.a.cross(t.b), t.a.cross(t.c));
@@ -1278,7 +1275,7 @@ pub fn spherical_triangle_inverse(w: Vec3, a: Vec3, b: Vec3, c: Vec3, p: Vec3) -
     }
     let ux = spherical_triangle_area(t.a, t.b, c_prime) / t.area;
     let uy = (w - t.b).length_squared() / (c_prime - t.b).length_squared();
-    Vec2::new(unit(ux as f32), unit(uy as f32))
+    Vec2::new(clamp_unit(ux as f32), clamp_unit(uy as f32))
 }
 
 /// The spherical rectangle of a light rectangle seen from a point, in the
@@ -1439,7 +1436,7 @@ pub fn spherical_rectangle(
         let centre = corner + 0.5 * (ex + ey);
         return ((centre - p).normalize_or(Vec3::Z), 0.0, Vec2::splat(0.5));
     };
-    let u = unit2(u).as_dvec2();
+    let u = clamp_unit2(u).as_dvec2();
     // The line x = xu: the solid angle left of it is u.x omega.
     let au = u.x * r.area + r.k;
     let (sin_au, cos_au) = libm::sincos(au);
@@ -1678,13 +1675,13 @@ impl Discrete {
     #[inline]
     #[must_use]
     pub fn sample(&self, u: f32) -> (u32, f32, f32) {
-        let x = f64::from(unit(u));
+        let x = f64::from(clamp_unit(u));
         // The number of ends after the first that are <= x: the interval
         // [cdf[i], cdf[i + 1]) holding x, skipping empty ones. cdf[n] = 1 > x.
         let index = self.cdf[1..].partition_point(|&end| end <= x);
         let (lo, hi) = (self.cdf[index], self.cdf[index + 1]);
         let width = hi - lo;
-        let remapped = unit(((x - lo) / width) as f32);
+        let remapped = clamp_unit(((x - lo) / width) as f32);
         (index as u32, remapped, positive_pmf(width))
     }
 
@@ -1717,7 +1714,7 @@ impl Discrete {
     pub fn inverse(&self, index: u32, remapped: f32) -> f32 {
         let i = (index as usize).min(self.cdf.len() - 2);
         let (lo, hi) = (self.cdf[i], self.cdf[i + 1]);
-        unit((lo + f64::from(unit(remapped)) * (hi - lo)) as f32)
+        clamp_unit((lo + f64::from(clamp_unit(remapped)) * (hi - lo)) as f32)
     }
 }
 
@@ -1880,7 +1877,7 @@ impl AliasTable {
     #[inline]
     #[must_use]
     pub fn sample(&self, u: f32) -> (u32, f32, f32) {
-        let (slot, r) = discrete(unit(u), self.len());
+        let (slot, r) = discrete(clamp_unit(u), self.len());
         let (keep, alias) = self.slots[slot as usize];
         let (index, remapped) = if r < keep {
             (slot, r / keep)
@@ -1888,7 +1885,7 @@ impl AliasTable {
             // r >= keep, and r < 1, so keep < 1.
             (alias, (r - keep) / (1.0 - keep))
         };
-        (index, unit(remapped), self.pmf[index as usize])
+        (index, clamp_unit(remapped), self.pmf[index as usize])
     }
 
     /// The probability of choosing item `index`: its weight over the sum of

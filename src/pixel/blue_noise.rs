@@ -104,49 +104,9 @@ const PIXEL_TABLE: [[[u32; 2]; 256]; 4] = {
 /// neighbouring pixels complement each other, Owen-scrambled per frame and
 /// dimension pair.
 ///
-/// # Construction
-///
-/// For pixel `p = (x, y)`, sample `index` and a draw whose stream (from
-/// the frame, the pixel's `65536 x 65536` tile, the domain's key and the
-/// draw counter) seeds everything below:
-///
-/// 1. `s = prefix_shuffle(index, seed_i)` ([`prefix_shuffle`]), keyed
-///    by the draw and by the pixel's `16 x 16` square of the translated
-///    grid (step 2): each power-of-two prefix is the same aligned block of
-///    the sequence in every pixel, the pixels of a square visit their
-///    samples in one order (so squares complement each other at every
-///    prefix), and different draws, and squares, pair their samples in
-///    unrelated orders.
-/// 2. `c`: the Morton code (bits of `x` and `y` interleaved) of the pixel
-///    translated by a hashed offset (per draw and tile, modulo the tile),
-///    then shuffled by a nested scramble (per draw and tile): aligned
-///    blocks of codes map onto aligned blocks. Aligned squares of the translated grid keep aligned blocks of
-///    codes, so each square's shifts are one coset of its columns, while
-///    which pixel gets which shift, and where the squares' edges lie,
-///    change with every draw: two draws of one pixel have unrelated
-///    shifts. (A fixed arrangement per 16 x 16 block, the same
-///    for every pair, lowers the blurred error on image-space integrands
-///    but ties a pixel's draws together across the film; see
-///    `docs/blue_noise.md`.)
-/// 3. `q = C s xor G c`: `C s` is Sobol point `s` (dimensions 0 and 1, the
-///    [`Sobol`](crate::Sobol) generator matrices), and `G c` the xor of the
-///    pixel columns `G` of the set bits of `c`: a digital shift per pixel.
-/// 4. The point is `q` with both coordinates Owen-scrambled
-///    ([`owen_scramble_reversed`]), seeds from the draw's stream.
-///
-/// A digital shift maps elementary intervals onto elementary intervals,
-/// and so does an Owen scramble: each pixel's power-of-two prefixes keep
-/// the nets of the Sobol sequence, and each pixel's samples have the
-/// distribution of an Owen-scrambled Sobol set ([`Padded`](crate::Padded)
-/// `<Sobol>`'s). Over a block of neighbouring pixels, the prefix of `2^m`
-/// samples is the union of `2^m`-point nets shifted by the block's
-/// columns; a Walsh coefficient of the integrand that the block's shifts
-/// do not all leave alone cancels in the block's sum, so it leaves only
-/// high-frequency error on the screen. Which coefficients matter depends on
-/// `m`; `G` was searched so that the low ones cancel within small blocks
-/// for every prefix at once (unlike ZSobol, whose block structure is made
-/// for one count). Neither the count nor the resolution enters the formula,
-/// so every prefix of every count gets the same treatment.
+/// How it is built (the prefix shuffle, the translated and scrambled
+/// Morton code, the pixel columns, the Owen scramble) and why every
+/// prefix keeps its nets: `docs/blue_noise.md`, section Construction.
 ///
 /// # Properties
 ///
@@ -245,11 +205,9 @@ impl BlueNoise {
     /// # Errors
     ///
     /// [`Error::ZeroSamples`] for `samples_per_pixel = 0`, and
-    /// [`Error::ZeroGridSide`] for a zero width or height.
+    /// [`Error::ZeroResolution`] for a zero width or height.
     pub fn new(samples_per_pixel: u32, resolution: [u32; 2], frame: u32) -> Result<Self, Error> {
-        if samples_per_pixel == 0 {
-            return Err(Error::ZeroSamples);
-        }
+        super::check_film(samples_per_pixel, resolution)?;
         Self::unbounded(resolution, frame).map(|s| Self {
             samples_per_pixel,
             ..s
@@ -264,15 +222,9 @@ impl BlueNoise {
     ///
     /// # Errors
     ///
-    /// [`Error::ZeroGridSide`] for a zero width or height.
+    /// [`Error::ZeroResolution`] for a zero width or height.
     pub fn unbounded(resolution: [u32; 2], frame: u32) -> Result<Self, Error> {
-        let [width, height] = resolution;
-        if width == 0 || height == 0 {
-            return Err(Error::ZeroGridSide {
-                columns: width,
-                rows: height,
-            });
-        }
+        super::check_resolution(resolution)?;
         Ok(Self {
             samples_per_pixel: 0,
             resolution,

@@ -238,6 +238,7 @@ impl<S: PixelSampler> Domain<S> {
     /// sample `index * count + j` (see the type's Properties and Limits).
     #[inline]
     #[must_use]
+    #[track_caller]
     pub fn split(&self, key: u32, count: u32, j: u32) -> Self
     where
         S: Copy,

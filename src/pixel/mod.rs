@@ -22,8 +22,27 @@ pub use padded::Padded;
 pub use padded_nd::PaddedNd;
 pub use zsobol::ZSobol;
 
+use crate::Error;
 use crate::primitives::{mix64, salt};
 use crate::traits::second_stream;
+
+/// The check every pixel sampler with a film shares: a width and a height
+/// of at least one pixel.
+pub(crate) fn check_resolution(resolution: [u32; 2]) -> Result<(), Error> {
+    if resolution.contains(&0) {
+        Err(Error::ZeroResolution { resolution })
+    } else {
+        Ok(())
+    }
+}
+
+/// [`check_resolution`], and at least one sample per pixel.
+pub(crate) fn check_film(samples_per_pixel: u32, resolution: [u32; 2]) -> Result<(), Error> {
+    if samples_per_pixel == 0 {
+        return Err(Error::ZeroSamples);
+    }
+    check_resolution(resolution)
+}
 
 /// Sample positions for a whole image: sample `index` of pixel `pixel` as
 /// a [`Domain`] ([`start`](Self::start)) that draws 1D to 4D values.

@@ -85,12 +85,18 @@ impl<S: Sampler2D> Padded<S> {
 }
 
 impl<S: DomainSampler + Send + Sync> PixelSampler for Padded<S> {
-    /// `None` when the wrapped sampler is unbounded (`len() == u32::MAX`).
+    /// `None` when the wrapped sampler is a progressive sequence
+    /// ([`DomainSampler::is_progressive`]) built with no set size
+    /// (`unbounded()`, `len() == u32::MAX`); otherwise its `len()`. A
+    /// fixed-size set of `u32::MAX` points has a count: its indices start
+    /// a new pass past it like any other set's.
     #[inline]
     fn samples_per_pixel(&self) -> Option<u32> {
-        match self.sampler.len() {
-            u32::MAX => None,
-            n => Some(n),
+        let n = self.sampler.len();
+        if self.sampler.is_progressive() && n == u32::MAX {
+            None
+        } else {
+            Some(n)
         }
     }
 
@@ -139,5 +145,39 @@ pub(super) fn packed_root([x, y]: [u32; 2], frame: u32) -> Root {
         key: (u64::from(y) << 32 | u64::from(x))
             ^ u64::from(frame).wrapping_mul(salt::PADDED_FRAME),
         pixel_state: 0,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::SamplerKind;
+
+    #[test]
+    fn only_an_unbounded_sequence_has_no_count() {
+        for &kind in SamplerKind::ALL {
+            // Fixed-size sets of u32::MAX points (where the kind accepts
+            // that many) have a count, and their indices wrap into passes.
+            let Ok(sampler) = kind.build(u32::MAX) else {
+                continue;
+            };
+            let expected = if sampler.as_sequence().is_some() {
+                None
+            } else {
+                Some(u32::MAX)
+            };
+            assert_eq!(
+                Padded::new(sampler, 0).samples_per_pixel(),
+                expected,
+                "{kind}"
+            );
+        }
+        for kind in [
+            SamplerKind::Regular,
+            SamplerKind::Jittered,
+            SamplerKind::Random,
+        ] {
+            assert!(kind.build(u32::MAX).is_ok(), "{kind}");
+        }
     }
 }

@@ -133,23 +133,15 @@ impl ZSobol {
     /// - [`Error::ZeroSamples`] for `samples_per_pixel = 0`, and
     ///   [`Error::SamplesNotPowerOfTwo`] for any other count that is not a
     ///   power of two.
-    /// - [`Error::ZeroGridSide`] for a zero width or height.
+    /// - [`Error::ZeroResolution`] for a zero width or height.
     /// - [`Error::IndexSpaceTooLarge`] when `side^2 x spp` exceeds `2^32`
     ///   (see Limits above).
     pub fn new(samples_per_pixel: u32, resolution: [u32; 2], frame: u32) -> Result<Self, Error> {
-        if samples_per_pixel == 0 {
-            return Err(Error::ZeroSamples);
-        }
+        super::check_film(samples_per_pixel, resolution)?;
         if !samples_per_pixel.is_power_of_two() {
             return Err(Error::SamplesNotPowerOfTwo { samples_per_pixel });
         }
         let [width, height] = resolution;
-        if width == 0 || height == 0 {
-            return Err(Error::ZeroGridSide {
-                columns: width,
-                rows: height,
-            });
-        }
         let log2_spp = samples_per_pixel.trailing_zeros();
         let log2_side = u64::from(width.max(height))
             .next_power_of_two()
@@ -355,7 +347,7 @@ mod tests {
         ));
         assert!(matches!(
             ZSobol::new(4, [0, 4], 0),
-            Err(Error::ZeroGridSide { .. })
+            Err(Error::ZeroResolution { .. })
         ));
     }
 

@@ -70,7 +70,7 @@ pub(crate) fn locate_pass(index: u32, n: u32, key: u64) -> (u32, u64) {
     }
 }
 
-/// The pattern for one pixel, frame (or seed) and dimension pair.
+/// The pattern for one pixel, frame and dimension pair.
 ///
 /// Renderers call this once per pixel and dimension pair (pixel position,
 /// lens, time, ...) and pass the result as `pattern` to

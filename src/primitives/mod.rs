@@ -9,8 +9,8 @@
 //! - The unit conversion from bits to `[0, 1)`: [`u32_to_unit_f32`],
 //!   [`stratum_to_unit_f32`], with [`UNIT_BITS`], [`MAX_STRATA`] and
 //!   [`ONE_MINUS_EPSILON`].
-//! - Owen scrambling for the base-2 sequences: [`radical_inverse_2`],
-//!   [`owen_scramble`], [`owen_scramble_reversed`].
+//! - Owen scrambling for the base-2 sequences: [`owen_scramble`],
+//!   [`owen_scramble_reversed`].
 //! - Invariant division (crate-private): the reciprocals samplers store so
 //!   that no sample divides.
 //!
@@ -28,8 +28,9 @@ mod unit;
 pub(crate) use division::InvariantDivisor;
 pub(crate) use hash::{child_key, locate_pass, salt};
 pub use hash::{hash_combine, hash_u32, mix64, pattern_seed, rand_u32};
-pub use owen::{owen_scramble, owen_scramble_reversed, radical_inverse_2};
+pub use owen::{owen_scramble, owen_scramble_reversed};
+pub(crate) use permutation::SHORT_LEN;
+pub use permutation::permute;
 pub use permutation::prefix_shuffle;
 pub(crate) use permutation::{Permutation, derived_key};
-pub use permutation::{SHORT_LEN, permute};
 pub use unit::{MAX_STRATA, ONE_MINUS_EPSILON, UNIT_BITS, stratum_to_unit_f32, u32_to_unit_f32};

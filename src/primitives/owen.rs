@@ -1,23 +1,12 @@
 //! Base-2 digit scrambling for the progressive sequences (Sobol, pmj02,
-//! Halton, Hammersley): radical inverses and Owen scrambling.
-
-/// The base-2 radical inverse (van der Corput) of `index` in 0.32 fixed
-/// point: the bits of `index` mirrored about the binary point, so the result
-/// is `radical_inverse_2(index) / 2^32`.
-///
-/// This is also the "reversed-bit" form the scrambles below work in: bit `k`
-/// of a reversed value is the digit of weight `2^-(k+1)`.
-///
-/// ```
-/// use wellspread::primitives::radical_inverse_2;
-/// assert_eq!(radical_inverse_2(1), 1 << 31); // 1/2
-/// assert_eq!(radical_inverse_2(6), 3 << 29); // 0.011 in binary = 3/8
-/// ```
-#[inline(always)]
-#[must_use]
-pub const fn radical_inverse_2(index: u32) -> u32 {
-    index.reverse_bits()
-}
+//! Halton, Hammersley): Owen scrambling.
+//!
+//! The base-2 radical inverse (van der Corput) of `index` in 0.32 fixed
+//! point is `index.reverse_bits()`: the bits mirrored about the binary
+//! point. That is also the "reversed-bit" form the scrambles below work
+//! in: bit `k` of a reversed value is the digit of weight `2^-(k+1)`. The
+//! crate writes `reverse_bits()` for both meanings, with a comment where
+//! it is a radical inverse.
 
 /// Owen scrambling (a nested uniform scramble) of a value given in reversed
 /// bit order: the hash-based Laine-Karras permutation of Burley 2020,
@@ -112,7 +101,6 @@ mod tests {
     fn owen_scrambles_are_pinned() {
         // Part of every Sobol, Pmj02, Halton and Hammersley sample; values
         // cross-checked against an independent Python transcription.
-        assert_eq!(radical_inverse_2(1), 0x8000_0000);
         assert_eq!(owen_scramble_reversed(0, 0), 0);
         assert_eq!(owen_scramble_reversed(1, 0), 0x3707_b665);
         assert_eq!(

@@ -28,7 +28,7 @@ use super::hash::hash_u32;
 /// The longest permutation built as an exact Fisher-Yates shuffle: eight
 /// nibbles fill a u32, and `8! = 40,320` leaves the key's 2^32 values
 /// spread over the permutations to within one part in 10^5.
-pub const SHORT_LEN: u32 = 8;
+pub(crate) const SHORT_LEN: u32 = 8;
 
 /// A pseudo-random bijection of `[0, len)`: element `index` of permutation
 /// `pattern`.
@@ -65,6 +65,7 @@ pub const SHORT_LEN: u32 = 8;
 /// ```
 #[inline]
 #[must_use]
+#[track_caller]
 pub fn permute(index: u32, len: u32, pattern: u32) -> u32 {
     assert!(len >= 1, "permute needs len >= 1");
     debug_assert!(index < len, "permute index {index} out of range 0..{len}");

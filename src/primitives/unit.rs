@@ -71,6 +71,7 @@ const fn to_unit_f32(t: u32) -> f32 {
 /// ```
 #[inline(always)]
 #[must_use]
+#[track_caller]
 pub const fn stratum_to_unit_f32(stratum: u32, strata: u32, bits: u32) -> f32 {
     debug_assert!(strata >= 1 && strata <= MAX_STRATA && stratum < strata);
     let strata = strata as u64;

@@ -4,8 +4,8 @@ use crate::primitives::{
     InvariantDivisor, MAX_STRATA, hash_u32, owen_scramble_reversed, permute, rand_u32, salt,
     u32_to_unit_f32,
 };
-use crate::simd::{self, Isa, PointKernel, Pointwise};
-use crate::traits::{FillOn, Sampler2D, check_fill_len, debug_check_index};
+use crate::simd::{self, PointKernel, Pointwise};
+use crate::traits::{Sampler2D, check_fill_len, debug_check_index};
 use crate::{DomainSampler, Error, SamplerKind};
 
 /// The Hammersley set `(i / n, phi_2(i))`, randomised: scrambled.
@@ -158,7 +158,13 @@ impl Sampler2D for Hammersley {
     }
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        self.fill_on(Isa::best(), pattern, out);
+        check_fill_len(out.len(), self.len());
+        let pattern_hash = hash_u32(pattern);
+        let kernel = HammersleyKernel {
+            sampler: self,
+            pattern_hash,
+        };
+        simd::fill(&Pointwise(kernel), 0, out);
     }
 }
 
@@ -172,17 +178,5 @@ impl DomainSampler for Hammersley {
         let n = self.len();
         let index = if index < n { index } else { index % n };
         self.sample(permute(index, n, (stream >> 32) as u32), stream as u32)
-    }
-}
-
-impl FillOn for Hammersley {
-    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
-        check_fill_len(out.len(), self.len());
-        let pattern_hash = hash_u32(pattern);
-        let kernel = HammersleyKernel {
-            sampler: self,
-            pattern_hash,
-        };
-        simd::fill_on(isa, &Pointwise(kernel), 0, out);
     }
 }

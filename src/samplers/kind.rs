@@ -11,8 +11,7 @@ use super::{
     BlueMultiJittered, CorrelatedMultiJittered, Halton, Hammersley, Jittered, MultiJittered,
     NRooks, Pmj02, Random, Regular, Sobol,
 };
-use crate::simd::Isa;
-use crate::traits::{DomainSampler, FillOn, Sequence2D};
+use crate::traits::{DomainSampler, Sequence2D};
 use crate::{Error, Sampler2D};
 
 /// Declares the sampler list once: the kind enum, its names, the dispatching
@@ -114,15 +113,14 @@ macro_rules! sampler_kinds {
             }
         }
 
-        impl FillOn for AnySampler {
-            fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
+        impl DomainSampler for AnySampler {
+            #[inline]
+            fn is_progressive(&self) -> bool {
                 match self {
-                    $(AnySampler::$variant(s) => s.fill_on(isa, pattern, out),)*
+                    $(AnySampler::$variant(s) => s.is_progressive(),)*
                 }
             }
-        }
 
-        impl DomainSampler for AnySampler {
             #[inline]
             fn locate(&self, index: u32, key: u64) -> (u32, u64) {
                 match self {
@@ -333,6 +331,18 @@ mod tests {
             sequences,
             [SamplerKind::Halton, SamplerKind::Sobol, SamplerKind::Pmj02]
         );
+    }
+
+    #[test]
+    fn the_progressive_flag_is_the_sequence_trait() {
+        for &kind in SamplerKind::ALL {
+            let sampler = kind.build(16).unwrap();
+            assert_eq!(
+                sampler.is_progressive(),
+                sampler.as_sequence().is_some(),
+                "{kind}"
+            );
+        }
     }
 
     #[test]

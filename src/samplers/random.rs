@@ -1,8 +1,8 @@
 use glam::Vec2;
 
 use crate::primitives::{hash_combine, hash_u32, salt, u32_to_unit_f32};
-use crate::simd::{self, Isa, PointKernel, Pointwise};
-use crate::traits::{FillOn, Sampler2D, check_fill_len, debug_check_index};
+use crate::simd::{self, PointKernel, Pointwise};
+use crate::traits::{Sampler2D, check_fill_len, debug_check_index};
 use crate::{DomainSampler, Error};
 
 /// Independent uniform points: the baseline every other sampler must beat.
@@ -100,7 +100,10 @@ impl Sampler2D for Random {
     }
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        self.fill_on(Isa::best(), pattern, out);
+        check_fill_len(out.len(), self.n);
+        // The pattern hash once per set: three hashes per sample, not four.
+        let pattern_hash = hash_u32(pattern);
+        simd::fill(&Pointwise(RandomKernel { pattern_hash }), 0, out);
     }
 }
 
@@ -127,14 +130,5 @@ impl DomainSampler for Random {
             u32_to_unit_f32((stream >> 32) as u32),
             u32_to_unit_f32(stream as u32),
         )
-    }
-}
-
-impl FillOn for Random {
-    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
-        check_fill_len(out.len(), self.n);
-        // The pattern hash once per set: three hashes per sample, not four.
-        let pattern_hash = hash_u32(pattern);
-        simd::fill_on(isa, &Pointwise(RandomKernel { pattern_hash }), 0, out);
     }
 }

@@ -2,9 +2,10 @@
 //! point, never a panic.
 
 use proptest::prelude::*;
+use wellspread::Error;
 use wellspread::glam::Vec2;
 use wellspread::metrics::{
-    Error, centered_l2_discrepancy, is_latin, is_net_base2, is_stratified, l2_star_discrepancy,
+    centered_l2_discrepancy, is_latin, is_net_base2, is_stratified, l2_star_discrepancy,
     min_distance, net_t_value, normalized_toroidal_min_distance, radial_power_spectrum,
     star_discrepancy, toroidal_min_distance, wraparound_l2_discrepancy,
 };

@@ -1,8 +1,9 @@
 //! The radial power spectrum against its definition.
 
 use proptest::prelude::*;
+use wellspread::Error;
 use wellspread::glam::Vec2;
-use wellspread::metrics::{Error, MAX_SPECTRUM_FREQUENCY, radial_power_spectrum};
+use wellspread::metrics::{MAX_SPECTRUM_FREQUENCY, radial_power_spectrum};
 
 use crate::common::{hammersley, random_points, unit_points};
 

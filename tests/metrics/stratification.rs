@@ -2,8 +2,9 @@
 //! force count of elementary intervals.
 
 use proptest::prelude::*;
+use wellspread::Error;
 use wellspread::glam::Vec2;
-use wellspread::metrics::{Error, is_latin, is_net_base2, is_stratified, net_t_value};
+use wellspread::metrics::{is_latin, is_net_base2, is_stratified, net_t_value};
 use wellspread::{Pmj02, Sampler2D, Sobol};
 
 use crate::common::{hammersley, random_points};

@@ -436,7 +436,7 @@ fn build_errors_are_the_constructors() {
     ));
     assert!(matches!(
         z.build(4, [0, 8], 0),
-        Err(Error::ZeroGridSide { .. })
+        Err(Error::ZeroResolution { .. })
     ));
 }
 
@@ -617,7 +617,7 @@ fn a_new_pixel_sampler_plugs_in_with_three_methods() {
 /// ZSobol's Domain draws keep its blue-noise error: on a smooth integrand,
 /// the same in every pixel, the error of each 2 x 2 quad's mean is well
 /// below that of padded Sobol's (whose four pixels are independent), as
-/// for `sample_pixel` (tests/pixel/main.rs), for the root domain's first
+/// for `sample_pixel` (tests/pixel/zsobol.rs), for the root domain's first
 /// and a later draw and for a branch.
 #[test]
 fn zsobol_domain_draws_keep_quad_error_cancellation() {

@@ -18,6 +18,7 @@
 //! prefix. The release-only test (`#[cfg(not(debug_assertions))]`) runs in
 //! `.ci/run`'s `cargo test --release` step.
 
+mod blue_multi_jittered;
 mod checks;
 mod construction;
 mod contract;

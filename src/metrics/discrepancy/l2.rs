@@ -89,13 +89,7 @@ pub fn l2_star_discrepancy(points: &[Vec2]) -> Result<f64, Error> {
     let pairs = sum_min_min(entries, &q_by_rank, |v| one_minus(coord(v)));
     // 18 n² T² = 2 n² - 9 n Σ (1 - x²)(1 - y²) + 18 Σ Σ min min; 2 n² and
     // 9 n are exact in f64 for n below 2^26.
-    let total = Dd {
-        hi: 2.0 * nf * nf,
-        lo: 0.0,
-    }
-    .sub(single.mul_f64(9.0 * nf))
-    .add(pairs.mul_f64(18.0));
-    Ok(libm::sqrt((total.value() / (18.0 * nf * nf)).max(0.0)))
+    Ok(combine(nf, [2.0, 9.0, 18.0], single, pairs))
 }
 
 /// Centred L2 discrepancy (Hickernell 1998), with `u = x - 1/2`:
@@ -224,13 +218,20 @@ pub fn centered_l2_discrepancy(points: &[Vec2]) -> Result<f64, Error> {
         pairs = pairs.add(sum);
     }
     // 144 n² CD² = 25 n² - 288 n Σ (..) + 144 Σ Σ (..).
+    Ok(combine(nf, [25.0, 288.0, 144.0], single, pairs))
+}
+
+/// `sqrt((a n² - b n single + c pairs) / (c n²))`, the last step of both L2
+/// discrepancies, in double-double until the division (`a n²` and `b n`
+/// are exact in f64 for n below 2^26).
+fn combine(nf: f64, [a, b, c]: [f64; 3], single: Dd, pairs: Dd) -> f64 {
     let total = Dd {
-        hi: 25.0 * nf * nf,
+        hi: a * nf * nf,
         lo: 0.0,
     }
-    .sub(single.mul_f64(288.0 * nf))
-    .add(pairs.mul_f64(144.0));
-    Ok(libm::sqrt((total.value() / (144.0 * nf * nf)).max(0.0)))
+    .sub(single.mul_f64(b * nf))
+    .add(pairs.mul_f64(c));
+    libm::sqrt((total.value() / (c * nf * nf)).max(0.0))
 }
 
 /// `1 - v`, exactly (TwoSum).

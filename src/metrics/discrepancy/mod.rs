@@ -83,6 +83,3 @@ pub(super) fn set_packed(words: &mut [u64], k: usize, value: u32) {
 pub(super) fn key_value(key: u64) -> f32 {
     f32::from_bits((key >> 32) as u32)
 }
-
-#[doc(hidden)]
-pub use wraparound::wraparound_l2_discrepancy_quadratic;

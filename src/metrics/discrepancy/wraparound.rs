@@ -8,7 +8,7 @@ use glam::Vec2;
 
 use super::{key_value, keys_in_place, pack_low_halves, packed, set_packed, sorted_keys};
 use crate::Error;
-use crate::metrics::double_double::{Dd, two_prod, two_sum};
+use crate::metrics::double_double::{Dd, two_prod};
 use crate::metrics::{coord, validate};
 
 /// Wrap-around L2 discrepancy (Hickernell 1998): the L2 discrepancy over all
@@ -436,14 +436,14 @@ fn dominance_sweep_fixed(sweep: &Sweep) -> Dd {
 }
 
 /// The direct O(n²) double sum for [`wraparound_l2_discrepancy`], kept as the
-/// reference its tests compare against (not part of the API).
+/// reference its unit tests compare against (test builds only).
 ///
 /// Every pair term, `(4/3)²` subtracted and the sum are in double-double
 /// (f64 terms have rounding errors that add up systematically on lattices,
 /// to 1e-11 relative at 4096 points), in a
 /// vectorisable inner loop: about 90 flops per pair.
-#[doc(hidden)]
-pub fn wraparound_l2_discrepancy_quadratic(points: &[Vec2]) -> Result<f64, Error> {
+#[cfg(test)]
+pub(crate) fn wraparound_l2_discrepancy_quadratic(points: &[Vec2]) -> Result<f64, Error> {
     validate(points)?;
     let n = points.len();
     let nf = n as f64;
@@ -462,7 +462,9 @@ pub fn wraparound_l2_discrepancy_quadratic(points: &[Vec2]) -> Result<f64, Error
 
 /// `Σ_{j > i} (f(dx) f(dy) - 16/9)` with `f(d) = 3/2 - d (1 - d)`, each term
 /// and the sum in double-double.
+#[cfg(test)]
 fn wraparound_row(xs: &[f64], ys: &[f64], i: usize) -> Dd {
+    use crate::metrics::double_double::two_sum;
     let mean = Dd::ratio(16.0, 9.0);
     // f(d) = 3/2 + (d² - d) as hi + lo; d itself is exact for f32 inputs
     // whose exponents differ by less than 29.
@@ -575,5 +577,88 @@ mod tests {
         }
         assert!(fits_fixed(&[Vec2::new(0.25, 0.5), Vec2::new(0.0, 0.75)]));
         assert!(!fits_fixed(&[Vec2::new(0.25, 0.5), Vec2::new(1e-30, 0.5)]));
+    }
+
+    /// Point sets the fast sum's cancellation is hardest on, from
+    /// `mix64` so the test needs no RNG.
+    fn hard_families(n: usize) -> Vec<(&'static str, Vec<Vec2>)> {
+        let unit = |i: usize, salt: u64| {
+            (crate::primitives::mix64(i as u64 ^ salt) >> 40) as f32 / 16_777_216.0
+        };
+        let nf = n as f32;
+        let g = ((n as f64) * 0.618_033_988_749_895).round() as usize | 1;
+        let mut sobol = vec![Vec2::ZERO; n];
+        crate::Sampler2D::fill(&crate::Sobol::new(n as u32).unwrap(), 9, &mut sobol);
+        let mut pmj = vec![Vec2::ZERO; n];
+        crate::Sampler2D::fill(&crate::Pmj02::new(n as u32).unwrap(), 9, &mut pmj);
+        vec![
+            (
+                "random",
+                (0..n).map(|i| Vec2::new(unit(i, 1), unit(i, 2))).collect(),
+            ),
+            (
+                "lattice",
+                (0..n)
+                    .map(|i| Vec2::new(i as f32 / nf, ((i * g) % n) as f32 / nf))
+                    .collect(),
+            ),
+            (
+                "few values",
+                (0..n)
+                    .map(|i| {
+                        Vec2::new(
+                            (unit(i, 3) * 5.0).floor() / 5.0,
+                            (unit(i, 4) * 3.0).floor() / 3.0,
+                        )
+                    })
+                    .collect(),
+            ),
+            (
+                "duplicated",
+                (0..n)
+                    .map(|i| Vec2::new(unit(i % n.div_ceil(4), 5), unit(i % n.div_ceil(4), 6)))
+                    .collect(),
+            ),
+            (
+                "cluster",
+                (0..n)
+                    .map(|i| Vec2::new(0.7 + unit(i, 7) * 1e-4, 0.2 + unit(i, 8) * 1e-4))
+                    .collect(),
+            ),
+            ("one point repeated", vec![Vec2::new(0.3, 0.8); n]),
+            (
+                "diagonal",
+                (0..n).map(|i| Vec2::splat(i as f32 / nf)).collect(),
+            ),
+            (
+                "tiny and any f32",
+                (0..n)
+                    .map(|i| {
+                        let bits = crate::primitives::mix64(i as u64 ^ 9) % 0x3f80_0000;
+                        Vec2::new(unit(i, 10) * 1e-30, f32::from_bits(bits as u32))
+                    })
+                    .collect(),
+            ),
+            ("sobol", sobol),
+            ("pmj02", pmj),
+        ]
+    }
+
+    #[test]
+    fn the_fast_sum_matches_the_direct_sum_on_hard_families() {
+        // The direct sum takes about 1.5 s at 2^14: only the first five
+        // families run there.
+        for n in [1usize, 2, 3, 16, 100, 1000, 4096, 1 << 14] {
+            let families = hard_families(n);
+            let take = if n > 4096 { 5 } else { families.len() };
+            for (name, points) in families.into_iter().take(take) {
+                let fast = wraparound_l2_discrepancy(&points).unwrap();
+                let direct = wraparound_l2_discrepancy_quadratic(&points).unwrap();
+                assert!(
+                    (fast - direct).abs() <= 1e-12 * direct.abs().max(1e-300),
+                    "{name}, n = {n}: fast {fast:e}, direct {direct:e}"
+                );
+            }
+        }
     }
 }

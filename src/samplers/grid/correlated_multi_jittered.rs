@@ -2,8 +2,7 @@ use glam::Vec2;
 
 use super::{Grid, GridPattern, Jitter, SMALL_TABLE, fill_grid, small_table};
 use crate::primitives::{MAX_STRATA, Permutation, derived_key, hash_u32, salt};
-use crate::simd::Isa;
-use crate::traits::{DomainSampler, FillOn, Sampler2D};
+use crate::traits::{DomainSampler, Sampler2D};
 use crate::{Error, SamplerKind};
 
 /// Correlated multi-jittered sampling (Kensler 2013): multi-jitter in which
@@ -97,11 +96,30 @@ impl Sampler2D for CorrelatedMultiJittered {
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        self.pattern(pattern).point(index)
+        self.prepare(pattern).point(index)
     }
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        self.fill_on(Isa::best(), pattern, out);
+        let computed = self.prepare(pattern);
+        let (columns, rows) = (self.grid.columns(), self.grid.rows());
+        // Short shuffles are already one nibble lookup; longer ones up to
+        // SMALL_TABLE elements are hashed once per element here instead of
+        // once per sample.
+        let short = rows <= crate::primitives::SHORT_LEN;
+        if !short && columns as usize <= SMALL_TABLE && rows as usize <= SMALL_TABLE {
+            let tabled = CorrelatedMultiJitteredPattern {
+                grid: computed.grid,
+                order: computed.order,
+                sub_columns: ShuffleTable(small_table(rows, |row| computed.sub_columns.apply(row))),
+                sub_rows: ShuffleTable(small_table(columns, |column| {
+                    computed.sub_rows.apply(column)
+                })),
+                jitter: computed.jitter,
+            };
+            fill_grid(&tabled, out);
+        } else {
+            fill_grid(&computed, out);
+        }
     }
 }
 
@@ -164,7 +182,7 @@ impl CorrelatedMultiJittered {
     /// The pattern with its three permutations; keys from one hash of the
     /// pattern by three cheap derivations.
     #[inline(always)]
-    fn pattern(&self, pattern: u32) -> CorrelatedMultiJitteredPattern<'_, Permutation> {
+    fn prepare(&self, pattern: u32) -> CorrelatedMultiJitteredPattern<'_, Permutation> {
         let pattern_hash = hash_u32(pattern);
         let grid = &self.grid;
         CorrelatedMultiJitteredPattern {
@@ -180,28 +198,3 @@ impl CorrelatedMultiJittered {
 /// A domain's draws: 2D the sampler's own set, 1D stratified, 3D and 4D
 /// padded ([`DomainSampler`]'s defaults).
 impl DomainSampler for CorrelatedMultiJittered {}
-
-impl FillOn for CorrelatedMultiJittered {
-    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
-        let computed = self.pattern(pattern);
-        let (columns, rows) = (self.grid.columns(), self.grid.rows());
-        // Short shuffles are already one nibble lookup; longer ones up to
-        // SMALL_TABLE elements are hashed once per element here instead of
-        // once per sample.
-        let short = rows <= crate::primitives::SHORT_LEN;
-        if !short && columns as usize <= SMALL_TABLE && rows as usize <= SMALL_TABLE {
-            let tabled = CorrelatedMultiJitteredPattern {
-                grid: computed.grid,
-                order: computed.order,
-                sub_columns: ShuffleTable(small_table(rows, |row| computed.sub_columns.apply(row))),
-                sub_rows: ShuffleTable(small_table(columns, |column| {
-                    computed.sub_rows.apply(column)
-                })),
-                jitter: computed.jitter,
-            };
-            fill_grid(&tabled, isa, out);
-        } else {
-            fill_grid(&computed, isa, out);
-        }
-    }
-}

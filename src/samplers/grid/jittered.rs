@@ -2,8 +2,7 @@ use glam::Vec2;
 
 use super::{CellOffset, Grid, GridPattern, Jitter, fill_grid};
 use crate::primitives::{Permutation, hash_u32};
-use crate::simd::Isa;
-use crate::traits::{DomainSampler, FillOn, Sampler2D};
+use crate::traits::{DomainSampler, Sampler2D};
 use crate::{Error, SamplerKind};
 
 /// One uniformly random point in each cell of a `columns x rows` grid
@@ -98,7 +97,7 @@ impl Jittered {
     }
 
     #[inline(always)]
-    fn pattern(&self, pattern: u32) -> JitteredPattern<'_, Jitter> {
+    fn prepare(&self, pattern: u32) -> JitteredPattern<'_, Jitter> {
         let pattern_hash = hash_u32(pattern);
         JitteredPattern {
             grid: &self.grid,
@@ -116,23 +115,17 @@ impl Sampler2D for Jittered {
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        self.pattern(pattern).point(index)
+        self.prepare(pattern).point(index)
     }
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        self.fill_on(Isa::best(), pattern, out);
+        fill_grid(&self.prepare(pattern), out);
     }
 }
 
 /// A domain's draws: 2D the sampler's own set, 1D stratified, 3D and 4D
 /// padded ([`DomainSampler`]'s defaults).
 impl DomainSampler for Jittered {}
-
-impl FillOn for Jittered {
-    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
-        fill_grid(&self.pattern(pattern), isa, out);
-    }
-}
 
 /// One pattern of [`Jittered`] (offset [`Jitter`]) or of
 /// [`Regular`](crate::Regular) (offset [`Centre`](super::Centre)): the

@@ -31,7 +31,7 @@ pub use n_rooks::NRooks;
 pub use regular::Regular;
 
 use crate::primitives::{InvariantDivisor, MAX_STRATA, Permutation, derived_key, rand_u32, salt};
-use crate::simd::{self, Isa, Kernel};
+use crate::simd::{self, Kernel};
 use crate::traits::{check_fill_len, debug_check_index};
 use crate::{Error, SamplerKind};
 
@@ -326,16 +326,16 @@ impl<P: GridPattern, const POW2: bool> Kernel for GridKernel<'_, P, POW2> {
     }
 }
 
-/// `fill` for every grid sampler on instruction set `isa`: the prepared
-/// pattern's points `0..out.len()`, with the power-of-two case chosen once
-/// per call.
+/// `fill` for every grid sampler: the prepared pattern's points
+/// `0..out.len()`, with the power-of-two case chosen once per call.
 #[inline]
-pub(crate) fn fill_grid<P: GridPattern>(pattern: &P, isa: Isa, out: &mut [Vec2]) {
+#[track_caller]
+pub(crate) fn fill_grid<P: GridPattern>(pattern: &P, out: &mut [Vec2]) {
     check_fill_len(out.len(), pattern.grid().len());
     if pattern.grid().n.is_power_of_two() {
-        simd::fill_on(isa, &GridKernel::<P, true>(pattern), 0, out);
+        simd::fill(&GridKernel::<P, true>(pattern), 0, out);
     } else {
-        simd::fill_on(isa, &GridKernel::<P, false>(pattern), 0, out);
+        simd::fill(&GridKernel::<P, false>(pattern), 0, out);
     }
 }
 

@@ -2,8 +2,7 @@ use glam::Vec2;
 
 use super::{Grid, GridPattern, Jitter, SMALL_TABLE, fill_grid};
 use crate::primitives::{MAX_STRATA, Permutation, hash_u32, salt};
-use crate::simd::Isa;
-use crate::traits::{DomainSampler, FillOn, Sampler2D};
+use crate::traits::{DomainSampler, Sampler2D};
 use crate::{Error, SamplerKind};
 
 /// Multi-jittered sampling: jittered on a coarse `columns x rows` grid and
@@ -101,11 +100,33 @@ impl Sampler2D for MultiJittered {
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        self.pattern(pattern).point(index)
+        self.prepare(pattern).point(index)
     }
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        self.fill_on(Isa::best(), pattern, out);
+        // There are only `columns + rows` shuffles, each built from a hash
+        // (and a Fisher-Yates shuffle for short sides): build them once and
+        // look them up.
+        fn tabled<'a, const S: usize>(
+            computed: &MultiJitteredPattern<'a, HashedLines>,
+        ) -> MultiJitteredPattern<'a, TabledLines<S>> {
+            MultiJitteredPattern {
+                grid: computed.grid,
+                order: computed.order,
+                shuffles: TabledLines::new(&computed.shuffles),
+                jitter: computed.jitter,
+            }
+        }
+        let computed = self.prepare(pattern);
+        // `rows >= columns`: the longer side decides the table.
+        let rows = self.grid.rows() as usize;
+        if rows <= 16 {
+            fill_grid(&tabled::<16>(&computed), out);
+        } else if rows <= SMALL_TABLE {
+            fill_grid(&tabled::<SMALL_TABLE>(&computed), out);
+        } else {
+            fill_grid(&computed, out);
+        }
     }
 }
 
@@ -224,7 +245,7 @@ const fn line_key(seed: u32, line: u32) -> u32 {
 
 impl MultiJittered {
     #[inline(always)]
-    fn pattern(&self, pattern: u32) -> MultiJitteredPattern<'_, HashedLines> {
+    fn prepare(&self, pattern: u32) -> MultiJitteredPattern<'_, HashedLines> {
         let pattern_hash = hash_u32(pattern);
         MultiJitteredPattern {
             grid: &self.grid,
@@ -243,31 +264,3 @@ impl MultiJittered {
 /// A domain's draws: 2D the sampler's own set, 1D stratified, 3D and 4D
 /// padded ([`DomainSampler`]'s defaults).
 impl DomainSampler for MultiJittered {}
-
-impl FillOn for MultiJittered {
-    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
-        // There are only `columns + rows` shuffles, each built from a hash
-        // (and a Fisher-Yates shuffle for short sides): build them once and
-        // look them up.
-        fn tabled<'a, const S: usize>(
-            computed: &MultiJitteredPattern<'a, HashedLines>,
-        ) -> MultiJitteredPattern<'a, TabledLines<S>> {
-            MultiJitteredPattern {
-                grid: computed.grid,
-                order: computed.order,
-                shuffles: TabledLines::new(&computed.shuffles),
-                jitter: computed.jitter,
-            }
-        }
-        let computed = self.pattern(pattern);
-        // `rows >= columns`: the longer side decides the table.
-        let rows = self.grid.rows() as usize;
-        if rows <= 16 {
-            fill_grid(&tabled::<16>(&computed), isa, out);
-        } else if rows <= SMALL_TABLE {
-            fill_grid(&tabled::<SMALL_TABLE>(&computed), isa, out);
-        } else {
-            fill_grid(&computed, isa, out);
-        }
-    }
-}

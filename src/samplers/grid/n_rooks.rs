@@ -2,8 +2,7 @@ use glam::Vec2;
 
 use super::{CellOffset, Grid, GridPattern, Jitter, fill_grid};
 use crate::primitives::{MAX_STRATA, Permutation, derived_key, hash_u32, salt};
-use crate::simd::Isa;
-use crate::traits::{DomainSampler, FillOn, Sampler2D};
+use crate::traits::{DomainSampler, Sampler2D};
 use crate::{Error, SamplerKind};
 
 /// N-rooks (Latin hypercube) sampling: one point in every row and every
@@ -72,7 +71,7 @@ impl NRooks {
     }
 
     #[inline(always)]
-    fn pattern(&self, pattern: u32) -> NRooksPattern<'_> {
+    fn prepare(&self, pattern: u32) -> NRooksPattern<'_> {
         let pattern_hash = hash_u32(pattern);
         NRooksPattern {
             grid: &self.grid,
@@ -91,23 +90,17 @@ impl Sampler2D for NRooks {
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        self.pattern(pattern).point(index)
+        self.prepare(pattern).point(index)
     }
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        self.fill_on(Isa::best(), pattern, out);
+        fill_grid(&self.prepare(pattern), out);
     }
 }
 
 /// A domain's draws: 2D the sampler's own set, 1D stratified, 3D and 4D
 /// padded ([`DomainSampler`]'s defaults).
 impl DomainSampler for NRooks {}
-
-impl FillOn for NRooks {
-    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
-        fill_grid(&self.pattern(pattern), isa, out);
-    }
-}
 
 /// One pattern of [`NRooks`]: its column and row permutations and jitter.
 struct NRooksPattern<'a> {

@@ -3,8 +3,7 @@ use glam::Vec2;
 use super::jittered::JitteredPattern;
 use super::{Centre, Grid, GridPattern, fill_grid};
 use crate::primitives::hash_u32;
-use crate::simd::Isa;
-use crate::traits::{DomainSampler, FillOn, Sampler2D, stratified_1d};
+use crate::traits::{DomainSampler, Sampler2D, stratified_1d};
 use crate::{Error, SamplerKind};
 
 /// Cell centres of a `columns x rows` grid: the deterministic baseline that
@@ -86,7 +85,7 @@ impl Regular {
     /// A jittered pattern whose offset is the cell's centre: only the order
     /// in which indices visit the cells depends on `pattern`.
     #[inline(always)]
-    fn pattern(&self, pattern: u32) -> JitteredPattern<'_, Centre> {
+    fn prepare(&self, pattern: u32) -> JitteredPattern<'_, Centre> {
         JitteredPattern {
             grid: &self.grid,
             order: self.grid.cell_order(hash_u32(pattern)),
@@ -103,11 +102,11 @@ impl Sampler2D for Regular {
 
     #[inline]
     fn sample(&self, index: u32, pattern: u32) -> Vec2 {
-        self.pattern(pattern).point(index)
+        self.prepare(pattern).point(index)
     }
 
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        self.fill_on(Isa::best(), pattern, out);
+        fill_grid(&self.prepare(pattern), out);
     }
 }
 
@@ -117,11 +116,5 @@ impl DomainSampler for Regular {
     #[inline]
     fn domain_1d(&self, index: u32, stream: u64) -> f32 {
         stratified_1d(index, self.len(), stream, false)
-    }
-}
-
-impl FillOn for Regular {
-    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
-        fill_grid(&self.pattern(pattern), isa, out);
     }
 }

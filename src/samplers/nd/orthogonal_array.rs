@@ -318,7 +318,7 @@ impl OrthogonalArray {
     /// The per-pattern work: the pattern's hash, its row order and its
     /// choice of columns.
     #[inline(always)]
-    fn pattern(&self, pattern: u32) -> ArrayPattern {
+    fn prepare(&self, pattern: u32) -> ArrayPattern {
         let hash = hash_u32(pattern);
         ArrayPattern {
             hash,
@@ -480,14 +480,14 @@ impl SamplerNd for OrthogonalArray {
 
     #[inline]
     fn coordinate(&self, index: u32, pattern: u32, dimension: u32) -> f32 {
-        let (index, pattern) = (reduce_index(index, self.n), self.pattern(pattern));
+        let (index, pattern) = (reduce_index(index, self.n), self.prepare(pattern));
         self.coordinate_of(index, pattern.rows.apply(index), &pattern, dimension)
     }
 
     #[track_caller]
     fn sample(&self, index: u32, pattern: u32, out: &mut [f32]) {
         let out = check_nd_out(out, self.dimensions);
-        let (index, pattern) = (reduce_index(index, self.n), self.pattern(pattern));
+        let (index, pattern) = (reduce_index(index, self.n), self.prepare(pattern));
         let row = pattern.rows.apply(index);
         if self.offset != OrthogonalArrayOffset::Jittered && self.strength() <= self.q.get() + 1 {
             self.sample_by_groups(index, row, &pattern, out);

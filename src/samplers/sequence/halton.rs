@@ -5,8 +5,8 @@ use crate::primitives::{
     hash_combine, hash_u32, owen_scramble_reversed, prefix_shuffle, salt, stratum_to_unit_f32,
     u32_to_unit_f32,
 };
-use crate::simd::{Isa, Kernel};
-use crate::traits::{FillOn, Sampler2D, Sequence2D};
+use crate::simd::Kernel;
+use crate::traits::{Sampler2D, Sequence2D};
 use crate::{DomainSampler, Error};
 
 /// Base-3 digits scrambled per sample: `3^15 = 14_348_907` strata, the most
@@ -128,7 +128,7 @@ impl Sampler2D for Halton {
 
     #[inline]
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        self.fill_on(Isa::best(), pattern, out);
+        fill_set(&Self::kernel(pattern), self.n, out);
     }
 }
 
@@ -138,8 +138,8 @@ impl Sampler2D for Halton {
 /// samples), 1D draws Sobol's, 3D and 4D padded.
 impl DomainSampler for Halton {
     #[inline]
-    fn locate(&self, index: u32, key: u64) -> (u32, u64) {
-        (index, key)
+    fn is_progressive(&self) -> bool {
+        true
     }
     #[inline]
     fn domain_1d(&self, index: u32, stream: u64) -> f32 {
@@ -156,12 +156,6 @@ impl Sequence2D for Halton {
     #[inline]
     fn fill_from(&self, start: u32, pattern: u32, out: &mut [Vec2]) {
         fill_run(&Self::kernel(pattern), start, out);
-    }
-}
-
-impl FillOn for Halton {
-    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
-        fill_set(isa, &Self::kernel(pattern), self.n, out);
     }
 }
 

@@ -23,7 +23,7 @@ pub use sobol::Sobol;
 use glam::Vec2;
 
 use crate::Error;
-use crate::simd::{self, Isa, Kernel};
+use crate::simd::{self, Kernel};
 use crate::traits::{check_fill_from, check_fill_len};
 
 /// The set size of a sequence's `new(n)`: any `n >= 1`.
@@ -36,18 +36,20 @@ pub(crate) const fn set_size(n: u32) -> Result<u32, Error> {
     }
 }
 
-/// `fill` of a sequence of set size `len` on `isa`: points `0..out.len()`
-/// of `kernel`, which must not exceed the set.
+/// `fill` of a sequence of set size `len`: points `0..out.len()` of
+/// `kernel`, which must not exceed the set.
 #[inline]
-pub(crate) fn fill_set<K: Kernel>(isa: Isa, kernel: &K, len: u32, out: &mut [Vec2]) {
+#[track_caller]
+pub(crate) fn fill_set<K: Kernel>(kernel: &K, len: u32, out: &mut [Vec2]) {
     check_fill_len(out.len(), len);
-    simd::fill_on(isa, kernel, 0, out);
+    simd::fill(kernel, 0, out);
 }
 
 /// `fill_from` of a sequence: points `start..start + out.len()` of
 /// `kernel`, which must not run past index `u32::MAX`.
 #[inline]
+#[track_caller]
 pub(crate) fn fill_run<K: Kernel>(kernel: &K, start: u32, out: &mut [Vec2]) {
     check_fill_from(start, out.len());
-    simd::fill_on(Isa::best(), kernel, start, out);
+    simd::fill(kernel, start, out);
 }

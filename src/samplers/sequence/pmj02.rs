@@ -3,8 +3,8 @@ use glam::{Vec2, Vec3, Vec4};
 use super::digital::{DigitalSequence, OwenSeeds, bits_to_point, scrambled_bits};
 use super::{Sobol, fill_run, fill_set, set_size};
 use crate::primitives::{owen_scramble, prefix_shuffle};
-use crate::simd::{Isa, Kernel};
-use crate::traits::{FillOn, Sampler2D, Sequence2D};
+use crate::simd::Kernel;
+use crate::traits::{Sampler2D, Sequence2D};
 use crate::{DomainSampler, Error};
 
 /// Progressive multi-jittered (0,2) sequence (pmj02, Christensen, Kensler &
@@ -128,7 +128,7 @@ impl Sampler2D for Pmj02 {
 
     #[inline]
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        self.fill_on(Isa::best(), pattern, out);
+        fill_set(&Self::kernel(pattern), self.n, out);
     }
 }
 
@@ -136,12 +136,6 @@ impl Sequence2D for Pmj02 {
     #[inline]
     fn fill_from(&self, start: u32, pattern: u32, out: &mut [Vec2]) {
         fill_run(&Self::kernel(pattern), start, out);
-    }
-}
-
-impl FillOn for Pmj02 {
-    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
-        fill_set(isa, &Self::kernel(pattern), self.n, out);
     }
 }
 
@@ -203,8 +197,8 @@ impl DigitalSequence for Pmj02 {
 /// dimension 0 anyway).
 impl DomainSampler for Pmj02 {
     #[inline]
-    fn locate(&self, index: u32, key: u64) -> (u32, u64) {
-        (index, key)
+    fn is_progressive(&self) -> bool {
+        true
     }
     #[inline]
     fn domain_1d(&self, index: u32, stream: u64) -> f32 {

@@ -7,8 +7,8 @@ use super::{fill_run, fill_set, set_size};
 use crate::DomainSampler;
 use crate::Error;
 use crate::primitives::{owen_scramble, prefix_shuffle};
-use crate::simd::{Isa, Kernel};
-use crate::traits::{FillOn, Sampler2D, Sequence2D};
+use crate::simd::Kernel;
+use crate::traits::{Sampler2D, Sequence2D};
 
 /// The first two dimensions of the Sobol sequence, Owen-scrambled with
 /// Burley's hash and shuffled: a randomised base-2 (0,2)-sequence.
@@ -144,7 +144,7 @@ impl Sampler2D for Sobol {
 
     #[inline]
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
-        self.fill_on(Isa::best(), pattern, out);
+        fill_set(&Self::kernel(pattern), self.n, out);
     }
 }
 
@@ -152,12 +152,6 @@ impl Sequence2D for Sobol {
     #[inline]
     fn fill_from(&self, start: u32, pattern: u32, out: &mut [Vec2]) {
         fill_run(&Self::kernel(pattern), start, out);
-    }
-}
-
-impl FillOn for Sobol {
-    fn fill_on(&self, isa: Isa, pattern: u32, out: &mut [Vec2]) {
-        fill_set(isa, &Self::kernel(pattern), self.n, out);
     }
 }
 
@@ -174,8 +168,8 @@ impl DigitalSequence for Sobol {
 /// 0, 3D and 4D draws the 4D set ([`DomainSampler`]'s table).
 impl DomainSampler for Sobol {
     #[inline]
-    fn locate(&self, index: u32, key: u64) -> (u32, u64) {
-        (index, key)
+    fn is_progressive(&self) -> bool {
+        true
     }
     #[inline]
     fn domain_1d(&self, index: u32, stream: u64) -> f32 {

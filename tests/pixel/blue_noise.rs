@@ -79,17 +79,11 @@ fn constructors_check_their_input() {
     assert_eq!(BlueNoise::new(0, [4, 4], 0), Err(Error::ZeroSamples));
     assert!(matches!(
         BlueNoise::new(4, [0, 4], 0),
-        Err(Error::ZeroGridSide {
-            columns: 0,
-            rows: 4
-        })
+        Err(Error::ZeroResolution { resolution: [0, 4] })
     ));
     assert!(matches!(
         BlueNoise::unbounded([4, 0], 0),
-        Err(Error::ZeroGridSide {
-            columns: 4,
-            rows: 0
-        })
+        Err(Error::ZeroResolution { resolution: [4, 0] })
     ));
     for spp in [1, 2, 3, 5, 12, 100, 1 << 16, (1 << 16) + 1, u32::MAX] {
         let sampler = BlueNoise::new(spp, [3840, 2160], 1).unwrap();
