@@ -10,6 +10,9 @@ use crate::{Gpu, HARNESS};
 
 /// The film kernel: [`HARNESS`], then this, after `wgsl::SOURCE`.
 pub const KERNEL: &str = "
+// The sampler's kind, a pipeline constant: the compiler keeps one sampler.
+override KIND: u32;
+
 @compute @workgroup_size(64)
 fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     let i = invocation(id);
@@ -19,7 +22,7 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     if (i >= width * height || arrayLength(&input) == 0u) {
         return;
     }
-    let s = WsSampler(params[0].x, params[0].y, params[0].z, params[0].w,
+    let s = WsSampler(KIND, params[0].y, params[0].z, params[0].w,
                       params[1].x, params[1].y, params[1].z, params[1].w);
     var d = ws_start(s, vec2<u32>(i % width, i / width), 0u);
     let film = ws_next_2d(s, &d);
@@ -38,13 +41,11 @@ pub fn gpu_film(gpu: &Gpu, case: &Case, width: u32, height: u32) -> Vec<u32> {
     params[8] = width;
     params[9] = height;
     let pixels = (width * height) as usize;
-    gpu.run(
+    gpu.kernel_with(
         &format!("{SOURCE}\n{HARNESS}\n{KERNEL}"),
-        &params,
-        &[],
-        pixels as u32,
-        3 * pixels,
+        &[("KIND", f64::from(case.gpu[0]))],
     )
+    .run(&params, &[], pixels as u32, 3 * pixels)
 }
 
 /// The same film from the CPU crate.

@@ -70,11 +70,43 @@ impl Gpu {
         })
     }
 
-    /// Runs `shader`'s entry point `main` (workgroup size 64) over
-    /// `invocations` threads with three bindings: `@binding(0)` a uniform
-    /// of 16 words (`uniform`, zero-padded), `@binding(1)` a read-only storage
-    /// array of `input` words and `@binding(2)` a read-write storage array
-    /// of `output_words` words, which it returns.
+    /// Compiles `shader`'s entry point `main` (workgroup size 64) with
+    /// three bindings: `@binding(0)` a uniform of 16 words, `@binding(1)` a
+    /// read-only storage array of u32 and `@binding(2)` a read-write one.
+    pub fn kernel(&self, shader: &str) -> Kernel<'_> {
+        self.kernel_with(shader, &[])
+    }
+
+    /// [`kernel`](Self::kernel) with values for the shader's `override`
+    /// constants: the test shaders take the sampler's kind this way, so
+    /// the driver drops the other samplers' code before compiling it.
+    pub fn kernel_with(&self, shader: &str, constants: &[(&str, f64)]) -> Kernel<'_> {
+        let module = self
+            .device
+            .create_shader_module(wgpu::ShaderModuleDescriptor {
+                label: Some("wellspread test shader"),
+                source: wgpu::ShaderSource::Wgsl(shader.into()),
+            });
+        let pipeline = self
+            .device
+            .create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+                label: None,
+                layout: None,
+                module: &module,
+                entry_point: Some("main"),
+                compilation_options: wgpu::PipelineCompilationOptions {
+                    constants,
+                    ..Default::default()
+                },
+                cache: None,
+            });
+        Kernel {
+            gpu: self,
+            pipeline,
+        }
+    }
+
+    /// [`kernel`](Self::kernel) and one [`Kernel::run`].
     pub fn run(
         &self,
         shader: &str,
@@ -83,19 +115,31 @@ impl Gpu {
         invocations: u32,
         output_words: usize,
     ) -> Vec<u32> {
-        let device = &self.device;
-        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("wellspread test shader"),
-            source: wgpu::ShaderSource::Wgsl(shader.into()),
-        });
-        let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-            label: None,
-            layout: None,
-            module: &module,
-            entry_point: Some("main"),
-            compilation_options: Default::default(),
-            cache: None,
-        });
+        self.kernel(shader)
+            .run(uniform, input, invocations, output_words)
+    }
+}
+
+/// A compiled test shader (compiling is most of a run's time on lavapipe).
+#[derive(Debug)]
+pub struct Kernel<'a> {
+    gpu: &'a Gpu,
+    pipeline: wgpu::ComputePipeline,
+}
+
+impl Kernel<'_> {
+    /// Runs `invocations` threads with `uniform` (zero-padded to 16 words)
+    /// and `input`; returns the first `output_words` words of the output.
+    pub fn run(
+        &self,
+        uniform: &[u32],
+        input: &[u32],
+        invocations: u32,
+        output_words: usize,
+    ) -> Vec<u32> {
+        let device = &self.gpu.device;
+        let queue = &self.gpu.queue;
+        let pipeline = &self.pipeline;
         let storage = |size: usize, usage: wgpu::BufferUsages| {
             device.create_buffer(&wgpu::BufferDescriptor {
                 label: None,
@@ -117,9 +161,9 @@ impl Gpu {
         );
         let mut params = uniform.to_vec();
         params.resize(16, 0);
-        self.queue.write_buffer(&uniform_buffer, 0, &bytes(&params));
+        queue.write_buffer(&uniform_buffer, 0, &bytes(&params));
         if !input.is_empty() {
-            self.queue.write_buffer(&input_buffer, 0, &bytes(input));
+            queue.write_buffer(&input_buffer, 0, &bytes(input));
         }
         let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: None,
@@ -142,7 +186,7 @@ impl Gpu {
         let mut encoder = device.create_command_encoder(&Default::default());
         {
             let mut pass = encoder.begin_compute_pass(&Default::default());
-            pass.set_pipeline(&pipeline);
+            pass.set_pipeline(pipeline);
             pass.set_bind_group(0, &bind_group, &[]);
             // At most 65,535 workgroups per dimension: a 2D grid of 64-wide groups.
             let groups = invocations.div_ceil(64);
@@ -156,7 +200,7 @@ impl Gpu {
             0,
             (output_words.max(4) * 4) as u64,
         );
-        self.queue.submit([encoder.finish()]);
+        queue.submit([encoder.finish()]);
         let (sender, receiver) = mpsc::channel();
         readback
             .slice(..)

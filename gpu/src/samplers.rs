@@ -46,13 +46,16 @@ pub const OUTPUT_NAMES: [&str; OUTPUT_WORDS] = [
 
 /// The test kernel: [`HARNESS`], then this, after `wgsl::SOURCE`.
 pub const KERNEL: &str = "
+// The sampler's kind, a pipeline constant: the compiler keeps one sampler.
+override KIND: u32;
+
 @compute @workgroup_size(64)
 fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     let i = invocation(id);
     if (i >= params[2].x) {
         return;
     }
-    let s = WsSampler(params[0].x, params[0].y, params[0].z, params[0].w,
+    let s = WsSampler(KIND, params[0].y, params[0].z, params[0].w,
                       params[1].x, params[1].y, params[1].z, params[1].w);
     let a = i * 8u;
     let pixel = vec2<u32>(input[a], input[a + 1u]);
@@ -292,7 +295,10 @@ pub fn compare(
     count: usize,
     seed: u64,
 ) -> (Vec<String>, std::time::Duration) {
-    let shader = format!("{source}\n{HARNESS}\n{KERNEL}");
+    let kernel = gpu.kernel_with(
+        &format!("{source}\n{HARNESS}\n{KERNEL}"),
+        &[("KIND", f64::from(case.gpu[0]))],
+    );
     let mut inputs = Inputs::new(seed);
     let mut failures = Vec::new();
     let mut mismatched_words = 0usize;
@@ -306,7 +312,7 @@ pub fn compare(
         params[..8].copy_from_slice(&case.gpu);
         params[8] = n as u32;
         let t = std::time::Instant::now();
-        let got = gpu.run(&shader, &params, &input, n as u32, n * OUTPUT_WORDS);
+        let got = kernel.run(&params, &input, n as u32, n * OUTPUT_WORDS);
         gpu_time += t.elapsed();
         for (i, (input, got)) in input
             .chunks_exact(INPUT_WORDS)

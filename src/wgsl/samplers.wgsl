@@ -240,6 +240,19 @@ fn ws_zsobol_index(s: WsSampler, d: WsDraw) -> u32 {
     return ws_owen_scramble(d.pixel_state | place, ws_rotr(seeds.y, 8u) ^ ws_rotr(seeds.z, 24u));
 }
 
+fn ws_zsobol_1d(s: WsSampler, d: WsDraw) -> f32 {
+    return ws_scrambled_unit(ws_zsobol_index(s, d), ws_seeds(d.stream).y);
+}
+
+fn ws_zsobol_2d(s: WsSampler, d: WsDraw) -> vec2<f32> {
+    let i = ws_zsobol_index(s, d);
+    return ws_scrambled_point(i, ws_pascal_reversed(i), ws_seeds(d.stream));
+}
+
+fn ws_zsobol_4d(s: WsSampler, d: WsDraw) -> vec4<f32> {
+    return ws_sobol_4d_point(ws_zsobol_index(s, d), d.stream, vec4<u32>(0u));
+}
+
 // --- BlueNoise -------------------------------------------------------------------
 
 // `BlueNoise::pixel_shift(1 << p)` for bit p of the reversed, scrambled
@@ -392,8 +405,7 @@ fn ws_draw_2d(s: WsSampler, d: WsDraw) -> vec2<f32> {
             return ws_jittered_sample(s, d.index, d.stream.x);
         }
         case 4u: {
-            let i = ws_zsobol_index(s, d);
-            return ws_scrambled_point(i, ws_pascal_reversed(i), ws_seeds(d.stream));
+            return ws_zsobol_2d(s, d);
         }
         default: {
             return ws_blue_noise_2d(d);
@@ -413,7 +425,7 @@ fn ws_draw_1d(s: WsSampler, d: WsDraw) -> f32 {
             return ws_stratified_1d(d.index, s.n, d.stream);
         }
         case 4u: {
-            return ws_scrambled_unit(ws_zsobol_index(s, d), ws_seeds(d.stream).y);
+            return ws_zsobol_1d(s, d);
         }
         default: {
             return ws_blue_noise_2d(d).x;
@@ -427,7 +439,7 @@ fn ws_draw_4d(s: WsSampler, d: WsDraw) -> vec4<f32> {
             return ws_sobol_4d(d.index, d.stream);
         }
         case 4u: {
-            return ws_sobol_4d_point(ws_zsobol_index(s, d), d.stream, vec4<u32>(0u));
+            return ws_zsobol_4d(s, d);
         }
         case 5u: {
             return ws_blue_noise_4d(d);
