@@ -21,7 +21,8 @@ fn films_equal_the_cpu_films() {
 }
 
 /// One constant changed in the WGSL (a salt, an Owen multiplier, a hash
-/// multiplier, a table entry, a 64-bit salt's high half): the comparison
+/// multiplier, a 64-bit salt's high half, an entry of the blue-noise and
+/// of the Sobol' table, Kensler's constant): the comparison
 /// must report mismatches for a sampler that uses it.
 #[test]
 fn a_changed_constant_fails_the_comparison() {
@@ -51,6 +52,16 @@ fn a_changed_constant_fails_the_comparison() {
             "vec2<u32>(0x5c26c926u, 0x2e1b2138u)",
             "vec2<u32>(0x5c26c926u, 0x2e1b2139u)",
             Case::jittered("jittered", 16, 0),
+        ),
+        (
+            "vec2<u32>(0x007c92bau, 0x006d233bu)",
+            "vec2<u32>(0x007c92bau, 0x006d233au)",
+            Case::blue_noise("blue-noise", 16, 0),
+        ),
+        (
+            "vec2<u32>(0x00000006u, 0x00000004u)",
+            "vec2<u32>(0x00000006u, 0x00000005u)",
+            Case::padded("sobol", SamplerKind::Sobol, 16, 0),
         ),
         (
             "0xdf6e307fu",
