@@ -171,6 +171,37 @@ fn table() -> String {
          and `mix64` on u32 pairs)."
     )
     .unwrap();
+    // The warps, on a point made of the stream's bits.
+    let u = "vec2<f32>(bitcast<f32>(d.stream.x), bitcast<f32>(d.stream.y))";
+    let warp_baseline = spirv_instructions(&kernel(&format!("vec4<f32>({u}, 0.0, 0.0)")));
+    out.push_str("\n| warp | instructions |\n| --- | --- |\n");
+    for (name, expression) in [
+        (
+            "concentric_disk",
+            "vec4<f32>(ws_concentric_disk(U), 0.0, 0.0)",
+        ),
+        (
+            "concentric_disk_pdf",
+            "vec4<f32>(ws_concentric_disk_pdf(U), U, 0.0)",
+        ),
+        (
+            "cosine_hemisphere",
+            "vec4<f32>(ws_cosine_hemisphere(U), 0.0)",
+        ),
+        (
+            "uniform_hemisphere",
+            "vec4<f32>(ws_uniform_hemisphere(U), 0.0)",
+        ),
+        ("uniform_sphere", "vec4<f32>(ws_uniform_sphere(U), 0.0)"),
+        ("uniform_triangle", "vec4<f32>(ws_uniform_triangle(U), 0.0)"),
+        (
+            "discrete",
+            "vec4<f32>(U, ws_discrete(U.x, d.index).remapped, 0.0)",
+        ),
+    ] {
+        let cost = spirv_instructions(&kernel(&expression.replace('U', u))) - warp_baseline;
+        writeln!(out, "| `{name}` | {cost} |").unwrap();
+    }
     out
 }
 
