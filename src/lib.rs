@@ -149,6 +149,7 @@ mod samplers;
 mod simd;
 mod traits;
 pub mod warp;
+pub mod wgsl;
 
 pub use error::{Error, InputText};
 pub use pixel::{

@@ -29,6 +29,7 @@ fn every_relative_link_in_the_readme_and_docs_exists() {
         "docs/zsobol.md",
         "docs/blue_noise.md",
         "docs/warps.md",
+        "docs/gpu.md",
     ] {
         let dir = root.join(page).parent().unwrap().to_owned();
         let text = read(page);
@@ -62,6 +63,10 @@ fn docs_pages_start_with_their_regeneration_command_and_machine() {
         (
             "docs/warps.md",
             "cargo run --release --example warps -- docs/images/warps.png",
+        ),
+        (
+            "docs/gpu.md",
+            "REQUIRE_GPU=1 cargo test -p wellspread-gpu -- --nocapture",
         ),
     ] {
         let text = read(page);
