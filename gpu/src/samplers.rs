@@ -192,7 +192,8 @@ impl Case {
         let [x, y, index, key, draw, count, j, depth] = input.try_into().unwrap();
         let root = s.root([x, y]);
         let (at, domain_key) = s.locate(index, root.key);
-        let d = |k: u32| Draw::new(domain_key, draw.wrapping_add(k), at, root.pixel_state);
+        // Dimension 0: only PaddedNd reads it, and it has no WGSL twin.
+        let d = |k: u32| Draw::new(domain_key, draw.wrapping_add(k), 0, at, root.pixel_state);
         let mut o = [0u32; OUTPUT_WORDS];
         o[0] = s.draw_1d(d(0)).to_bits();
         let p2 = s.draw_2d(d(1));
