@@ -54,7 +54,8 @@ pub const PRIMITIVES: &str = include_str!("primitives.wgsl");
 /// [`PRIMITIVES`] before it.
 pub const SAMPLERS: &str = include_str!("samplers.wgsl");
 
-/// The warps with their pdfs (`src/wgsl/warps.wgsl`); needs nothing.
+/// The warps with their pdfs (`src/wgsl/warps.wgsl`); needs
+/// [`PRIMITIVES`] before it (the discrete warp's 64-bit product).
 pub const WARPS: &str = include_str!("warps.wgsl");
 
 /// [`PRIMITIVES`], [`SAMPLERS`] and [`WARPS`] in order: everything, ready to
@@ -155,7 +156,7 @@ mod tests {
         for (name, source) in [
             ("PRIMITIVES", PRIMITIVES.into()),
             ("PRIMITIVES + SAMPLERS", format!("{PRIMITIVES}\n{SAMPLERS}")),
-            ("WARPS", WARPS.into()),
+            ("PRIMITIVES + WARPS", format!("{PRIMITIVES}\n{WARPS}")),
             ("SOURCE", SOURCE.into()),
         ] {
             let module = naga::front::wgsl::parse_str(&source)

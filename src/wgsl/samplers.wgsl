@@ -144,13 +144,18 @@ const WS_SOBOL_COLUMNS_2_3 = array<vec2<u32>, 32>(
 // ws-sobol-columns-end
 );
 
-fn ws_sobol_2_3_reversed(index: u32) -> vec2<u32> {
-    var columns = WS_SOBOL_COLUMNS_2_3;
+// The xor of the columns whose bits are set in `bits`: a 32 x 64 matrix
+// over GF(2) times a vector.
+fn ws_xor_columns(columns: array<vec2<u32>, 32>, bits: u32) -> vec2<u32> {
     var v = vec2<u32>(0u, 0u);
     for (var j = 0u; j < 32u; j++) {
-        v ^= columns[j] & vec2<u32>(0u - ((index >> j) & 1u));
+        v ^= columns[j] & vec2<u32>(0u - ((bits >> j) & 1u));
     }
     return v;
+}
+
+fn ws_sobol_2_3_reversed(index: u32) -> vec2<u32> {
+    return ws_xor_columns(WS_SOBOL_COLUMNS_2_3, index);
 }
 
 fn ws_scrambled_unit(reversed: u32, seed: u32) -> f32 {
@@ -296,12 +301,7 @@ const WS_BLUE_NOISE_COLUMNS = array<vec2<u32>, 32>(
 );
 
 fn ws_blue_noise_pixel_shift(code_reversed: u32) -> vec2<u32> {
-    var columns = WS_BLUE_NOISE_COLUMNS;
-    var v = vec2<u32>(0u, 0u);
-    for (var p = 0u; p < 32u; p++) {
-        v ^= columns[p] & vec2<u32>(0u - ((code_reversed >> p) & 1u));
-    }
-    return v;
+    return ws_xor_columns(WS_BLUE_NOISE_COLUMNS, code_reversed);
 }
 
 // `BlueNoise::translated`: (code, seed).

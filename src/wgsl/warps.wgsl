@@ -190,7 +190,7 @@ fn ws_discrete(u0: f32, n0: u32) -> WsChoice {
         // u n < 2^-8: choice 0, the f32 product (not bit-exact on a GPU).
         return WsChoice(0u, ws_warp_unit(u * f32(n)));
     }
-    let scaled = ws_mul_wide_warp(m, n);
+    let scaled = ws_mul_wide(m, n);
     let index = ws_shr64_any(scaled, shift).x;
     let rest = ws_low_bits64(scaled, shift);
     let remapped = min(ws_scaled_f32_bits(rest, shift), 0x3f7fffffu);
@@ -199,19 +199,4 @@ fn ws_discrete(u0: f32, n0: u32) -> WsChoice {
 
 fn ws_discrete_pdf(n: u32) -> f32 {
     return select(1.0 / f32(n), 0.0, n == 0u);
-}
-
-// The full 64-bit product of two u32s (a copy of the primitives' one, so
-// that the warps need no other part).
-fn ws_mul_wide_warp(a: u32, b: u32) -> vec2<u32> {
-    let a0 = a & 0xffffu;
-    let a1 = a >> 16u;
-    let b0 = b & 0xffffu;
-    let b1 = b >> 16u;
-    let p00 = a0 * b0;
-    let p01 = a0 * b1;
-    let p10 = a1 * b0;
-    let p11 = a1 * b1;
-    let mid = (p00 >> 16u) + (p01 & 0xffffu) + (p10 & 0xffffu);
-    return vec2<u32>((p00 & 0xffffu) | (mid << 16u), p11 + (p01 >> 16u) + (p10 >> 16u) + (mid >> 16u));
 }
