@@ -60,7 +60,9 @@ pub trait Sampler2D {
     /// # Panics
     ///
     /// If `out` is longer than [`len`](Sampler2D::len): a set never wraps
-    /// around silently.
+    /// around silently. The panic names the caller's line (every
+    /// implementation is `#[track_caller]`).
+    #[track_caller]
     fn fill(&self, pattern: u32, out: &mut [Vec2]) {
         check_fill_len(out.len(), self.len());
         for (index, point) in (0..).zip(out.iter_mut()) {
@@ -182,7 +184,9 @@ pub trait Sequence2D: Sampler2D {
     /// # Panics
     ///
     /// If `start + out.len()` exceeds `2^32`: the sequence's last index is
-    /// `u32::MAX`, and it never wraps around to index 0.
+    /// `u32::MAX`, and it never wraps around to index 0. The panic names
+    /// the caller's line (every implementation is `#[track_caller]`).
+    #[track_caller]
     fn fill_from(&self, start: u32, pattern: u32, out: &mut [Vec2]);
 }
 

@@ -744,10 +744,8 @@ mod tests {
     fn robust_path_matches_brute_force() {
         let mut state = 99u64;
         let mut unit = || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (state >> 40) as f32 / (1u32 << 24) as f32
+            state += 1;
+            (crate::primitives::mix64(state) >> 40) as f32 / (1u32 << 24) as f32
         };
         for case in 0..300 {
             let n = 2 + case % 97;

@@ -233,16 +233,6 @@ fn absolute_sweep(n: usize, uv: impl Iterator<Item = (f64, f64)>) -> (Dd, Dd) {
     (abs, weighted)
 }
 
-/// One Fenwick node: how many points and the sums of their x, y and x y.
-#[derive(Clone, Copy, Debug, Default)]
-#[repr(align(64))]
-struct DominanceNode {
-    count: f64,
-    x: Dd,
-    y: Dd,
-    xy: Dd,
-}
-
 /// The points in increasing x (ties in index order) as their y ranks
 /// (packed two to a u64), and per y rank the point's coordinates as
 /// `y << 32 | x`, each as its f32 bits or, for [`dominance_sweep_fixed`],
@@ -292,63 +282,192 @@ impl Sweep<'_> {
 
 /// `Σ (x_j - x_i)(y_j - y_i)` over the pairs with `x_i <= x_j` and `y_i < y_j`
 /// (pairs tied in x or y add 0 whichever way they are counted), given the
-/// points in increasing x with the ranks of their y.
-fn dominance_sweep(sweep: &Sweep) -> Dd {
+/// points in increasing x with the ranks of their y, in double-double
+/// ([`FloatSums`]) or, for the points of [`fits_fixed`] sets, exactly
+/// ([`FixedSums`]).
+///
+/// Two levels: a Fenwick tree over blocks of `S::RUN` consecutive ranks,
+/// and per block a bit per rank whose point is inserted (its coordinates
+/// come from `sweep`). The partial block below a rank is a short scan, and
+/// the tree is `S::RUN` times smaller, so fewer of its levels miss the
+/// cache.
+fn dominance_sweep_with<S: DominanceSums>(sweep: &Sweep) -> Dd {
     let n = sweep.len();
-    // Two levels: a Fenwick tree over blocks of RUN consecutive ranks, and
-    // per block a bit per rank whose point is inserted (its coordinates
-    // come from `sweep`). The partial block below a rank is a short scan,
-    // and the tree is RUN times smaller, so fewer of its levels miss the
-    // cache.
-    const RUN: usize = 8;
-    let blocks = n.div_ceil(RUN);
-    let mut tree = vec![DominanceNode::default(); blocks + 1];
-    let mut inserted = vec![0u8; blocks];
+    let blocks = n.div_ceil(S::RUN);
+    let mut tree = vec![S::default(); blocks + 1];
+    let mut inserted = vec![0u16; blocks];
     // Σ_j of: count x_j y_j, x_j Σy, y_j Σx, Σ x y over the points below j.
-    let mut t = [Dd::ZERO; 4];
+    let mut t = [S::Total::default(); 4];
     for (r, (xj, yj)) in read_ahead((0..n).map(|k| {
         let r = sweep.rank(k);
-        (r, sweep.float_point(r))
+        (r, S::point(sweep, r))
     })) {
-        let block = r / RUN;
-        let mut below = DominanceNode::default();
+        let block = r / S::RUN;
+        let mut below = S::default();
         // The inserted ranks of the block below r, in increasing order (an
         // empty rank would add zeros).
-        let mut bits = inserted[block] & ((1u16 << (r % RUN)) - 1) as u8;
+        let mut bits = inserted[block] & ((1u32 << (r % S::RUN)) - 1) as u16;
         while bits != 0 {
-            let (x, y) = sweep.float_point(block * RUN + bits.trailing_zeros() as usize);
+            let (x, y) = S::point(sweep, block * S::RUN + bits.trailing_zeros() as usize);
             bits &= bits - 1;
-            below.count += 1.0;
-            below.x = below.x.plus_f64(x);
-            below.y = below.y.plus_f64(y);
-            below.xy = below.xy.plus_f64(x * y);
+            below.insert(x, y);
         }
         let mut b = block;
         while b > 0 {
-            let node = &tree[b];
-            below.count += node.count;
-            below.x = below.x.plus(node.x);
-            below.y = below.y.plus(node.y);
-            below.xy = below.xy.plus(node.xy);
+            below.merge(&tree[b]);
             b &= b - 1;
         }
-        let xy = xj * yj;
-        t[0] = t[0].plus(two_prod(below.count, xy));
-        t[1] = t[1].plus(below.y.mul_short(xj));
-        t[2] = t[2].plus(below.x.mul_short(yj));
-        t[3] = t[3].plus(below.xy);
-        inserted[block] |= 1 << (r % RUN);
+        below.accumulate(&mut t, xj, yj);
+        inserted[block] |= 1 << (r % S::RUN);
         let mut b = block + 1;
         while b <= blocks {
-            let node = &mut tree[b];
-            node.count += 1.0;
-            node.x = node.x.plus_f64(xj);
-            node.y = node.y.plus_f64(yj);
-            node.xy = node.xy.plus_f64(xy);
+            tree[b].insert(xj, yj);
             b += b & b.wrapping_neg();
         }
     }
-    t[0].sub(t[1]).sub(t[2]).add(t[3])
+    S::finish(t)
+}
+
+/// What a [`dominance_sweep_with`] keeps per Fenwick node and per rank:
+/// how many points and the sums of their x, y and x y.
+trait DominanceSums: Copy + Default {
+    /// Ranks per block of the two-level tree, at most 16.
+    const RUN: usize;
+    /// One coordinate as the sweep reads it.
+    type Coord: Copy + Default;
+    /// One of the four sums over `j`.
+    type Total: Copy + Default;
+    /// The coordinates of the point of y rank `r`.
+    fn point(sweep: &Sweep, r: usize) -> (Self::Coord, Self::Coord);
+    /// Adds one point.
+    fn insert(&mut self, x: Self::Coord, y: Self::Coord);
+    /// Adds a node's sums.
+    fn merge(&mut self, node: &Self);
+    /// Adds point `j`'s terms against the points below it (`self`).
+    fn accumulate(&self, t: &mut [Self::Total; 4], xj: Self::Coord, yj: Self::Coord);
+    /// `t[0] - t[1] - t[2] + t[3]`, the sum over the pairs.
+    fn finish(t: [Self::Total; 4]) -> Dd;
+}
+
+/// [`DominanceSums`] in double-double, for any f32 coordinates.
+#[derive(Clone, Copy, Debug, Default)]
+#[repr(align(64))]
+struct FloatSums {
+    count: f64,
+    x: Dd,
+    y: Dd,
+    xy: Dd,
+}
+
+impl DominanceSums for FloatSums {
+    const RUN: usize = 8;
+    type Coord = f64;
+    type Total = Dd;
+
+    #[inline(always)]
+    fn point(sweep: &Sweep, r: usize) -> (f64, f64) {
+        sweep.float_point(r)
+    }
+
+    #[inline(always)]
+    fn insert(&mut self, x: f64, y: f64) {
+        self.count += 1.0;
+        self.x = self.x.plus_f64(x);
+        self.y = self.y.plus_f64(y);
+        self.xy = self.xy.plus_f64(x * y);
+    }
+
+    #[inline(always)]
+    fn merge(&mut self, node: &Self) {
+        self.count += node.count;
+        self.x = self.x.plus(node.x);
+        self.y = self.y.plus(node.y);
+        self.xy = self.xy.plus(node.xy);
+    }
+
+    #[inline(always)]
+    fn accumulate(&self, t: &mut [Dd; 4], xj: f64, yj: f64) {
+        t[0] = t[0].plus(two_prod(self.count, xj * yj));
+        t[1] = t[1].plus(self.y.mul_short(xj));
+        t[2] = t[2].plus(self.x.mul_short(yj));
+        t[3] = t[3].plus(self.xy);
+    }
+
+    fn finish(t: [Dd; 4]) -> Dd {
+        t[0].sub(t[1]).sub(t[2]).add(t[3])
+    }
+}
+
+/// [`DominanceSums`] in exact integer arithmetic, with `X = 2^32 x`, for
+/// the points of [`fits_fixed`] sets. The Fenwick sums of `X`, `Y` and
+/// `X Y` and the four sums over `j` stay below `n² 2^64`, so u128 holds
+/// them exactly for n up to 2^31; being exact, they do not depend on the
+/// tree's shape, whose blocks are twice as long here.
+#[derive(Clone, Copy, Default)]
+struct FixedSums {
+    count: u64,
+    x: u64,
+    y: u64,
+    xy: u128,
+}
+
+impl DominanceSums for FixedSums {
+    const RUN: usize = 16;
+    type Coord = u32;
+    type Total = u128;
+
+    #[inline(always)]
+    fn point(sweep: &Sweep, r: usize) -> (u32, u32) {
+        sweep.point(r)
+    }
+
+    #[inline(always)]
+    fn insert(&mut self, x: u32, y: u32) {
+        self.count += 1;
+        self.x += u64::from(x);
+        self.y += u64::from(y);
+        self.xy += u128::from(x) * u128::from(y);
+    }
+
+    #[inline(always)]
+    fn merge(&mut self, node: &Self) {
+        self.count += node.count;
+        self.x += node.x;
+        self.y += node.y;
+        self.xy += node.xy;
+    }
+
+    #[inline(always)]
+    fn accumulate(&self, t: &mut [u128; 4], xj: u32, yj: u32) {
+        t[0] += u128::from(self.count) * (u128::from(xj) * u128::from(yj));
+        t[1] += u128::from(self.y) * u128::from(xj);
+        t[2] += u128::from(self.x) * u128::from(yj);
+        t[3] += self.xy;
+    }
+
+    /// Σ (X_j - X_i)(Y_j - Y_i) >= 0 over the pairs, exactly, then times
+    /// 2^-64.
+    fn finish(t: [u128; 4]) -> Dd {
+        const ONE: f64 = 4_294_967_296.0; // 2^32
+        let total = (t[0] + t[3]) - (t[1] + t[2]);
+        let hi = total as f64;
+        let rest = total as i128 - hi as i128;
+        let scale = 1.0 / (ONE * ONE);
+        Dd {
+            hi: hi * scale,
+            lo: rest as f64 * scale,
+        }
+    }
+}
+
+/// The sweep for any f32 coordinates.
+fn dominance_sweep(sweep: &Sweep) -> Dd {
+    dominance_sweep_with::<FloatSums>(sweep)
+}
+
+/// The exact sweep for the points of [`fits_fixed`] sets.
+fn dominance_sweep_fixed(sweep: &Sweep) -> Dd {
+    dominance_sweep_with::<FixedSums>(sweep)
 }
 
 /// Whether [`dominance_sweep_fixed`] applies: every coordinate a multiple
@@ -360,79 +479,6 @@ fn fits_fixed(points: &[Vec2]) -> bool {
         scaled == libm::floor(scaled)
     };
     points.len() < 1 << 31 && points.iter().all(|p| on_grid(p.x) && on_grid(p.y))
-}
-
-/// [`dominance_sweep`] in exact integer arithmetic, with `X = 2^32 x`, for
-/// the points of [`fits_fixed`] sets. The Fenwick
-/// sums of `X`, `Y` and `X Y` and the four sums over `j` stay below
-/// `n² 2^64`, so u128 holds them exactly for n up to 2^31; being exact, they
-/// do not depend on the tree's shape, whose blocks are twice as long here.
-fn dominance_sweep_fixed(sweep: &Sweep) -> Dd {
-    const ONE: f64 = 4_294_967_296.0; // 2^32
-    let n = sweep.len();
-    #[derive(Clone, Copy, Default)]
-    struct Node {
-        count: u64,
-        x: u64,
-        y: u64,
-        xy: u128,
-    }
-    // As in `dominance_sweep`: a tree over blocks of RUN ranks, and per
-    // block a bit per inserted rank.
-    const RUN: usize = 16;
-    let blocks = n.div_ceil(RUN);
-    let mut tree = vec![Node::default(); blocks + 1];
-    let mut inserted = vec![0u16; blocks];
-    let mut t = [0u128; 4];
-    for (r, (xj, yj)) in read_ahead((0..n).map(|k| {
-        let r = sweep.rank(k);
-        (r, sweep.point(r))
-    })) {
-        let block = r / RUN;
-        let mut below = Node::default();
-        let mut bits = inserted[block] & ((1u32 << (r % RUN)) - 1) as u16;
-        while bits != 0 {
-            let (x, y) = sweep.point(block * RUN + bits.trailing_zeros() as usize);
-            bits &= bits - 1;
-            below.count += 1;
-            below.x += u64::from(x);
-            below.y += u64::from(y);
-            below.xy += u128::from(x) * u128::from(y);
-        }
-        let mut b = block;
-        while b > 0 {
-            let node = &tree[b];
-            below.count += node.count;
-            below.x += node.x;
-            below.y += node.y;
-            below.xy += node.xy;
-            b &= b - 1;
-        }
-        let xy = u128::from(xj) * u128::from(yj);
-        t[0] += u128::from(below.count) * xy;
-        t[1] += u128::from(below.y) * u128::from(xj);
-        t[2] += u128::from(below.x) * u128::from(yj);
-        t[3] += below.xy;
-        inserted[block] |= 1 << (r % RUN);
-        let mut b = block + 1;
-        while b <= blocks {
-            let node = &mut tree[b];
-            node.count += 1;
-            node.x += u64::from(xj);
-            node.y += u64::from(yj);
-            node.xy += xy;
-            b += b & b.wrapping_neg();
-        }
-    }
-    // Σ (X_j - X_i)(Y_j - Y_i) >= 0 over the pairs, exactly, then times 2^-64.
-    let total = (t[0] + t[3]) - (t[1] + t[2]);
-    let hi = total as f64;
-    let rest = total as i128 - hi as i128;
-    let scale = 1.0 / (ONE * ONE);
-    Dd {
-        hi: hi * scale,
-        lo: rest as f64 * scale,
-    }
 }
 
 /// The direct O(n²) double sum for [`wraparound_l2_discrepancy`], kept as the
@@ -527,10 +573,8 @@ mod tests {
     fn dominance_sweeps_agree() {
         let mut state = 7u64;
         let mut next = || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            state
+            state += 1;
+            crate::primitives::mix64(state)
         };
         for n in [1usize, 2, 9, 100, 3000] {
             // On the 2^-32 grid, with ties in both coordinates.
