@@ -250,7 +250,12 @@ fn radial_spectrum(sampler: &AnySampler, config: &Config) -> Vec<f64> {
 fn out_dir(config: &Config) -> PathBuf {
     // Benches run in the lab's folder: the workspace's target is one up.
     let target = std::env::var_os("CARGO_TARGET_DIR").map_or_else(
-        || Path::new(env!("CARGO_MANIFEST_DIR")).join("../target"),
+        || {
+            Path::new(env!("CARGO_MANIFEST_DIR"))
+                .parent()
+                .unwrap()
+                .join("target")
+        },
         PathBuf::from,
     );
     let dir = target.join("quality");
@@ -620,7 +625,10 @@ fn main() {
         eprintln!("--docs needs the full run: a --quick run never writes docs/");
     }
     if docs_asked && !config.quick {
-        let docs = Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs");
+        let docs = Path::new(env!("CARGO_MANIFEST_DIR"))
+            .parent()
+            .unwrap()
+            .join("docs");
         let block = docs_block(
             &config,
             &report[tables_start..tables_end],

@@ -236,7 +236,12 @@ fn samplers(c: &mut Criterion) {
 /// the workspace's `target`, one up from the lab, where cargo runs benches).
 pub(crate) fn target_dir() -> PathBuf {
     std::env::var_os("CARGO_TARGET_DIR").map_or_else(
-        || std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../target"),
+        || {
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+                .parent()
+                .unwrap()
+                .join("target")
+        },
         PathBuf::from,
     )
 }
