@@ -50,19 +50,31 @@ fn docs_pages_start_with_their_regeneration_command_and_machine() {
     for (page, command) in [
         (
             "docs/tracer.md",
-            "cargo run --release --example tracer -- --docs docs/tracer.md",
+            "cargo run --release -p wellspread-lab --example tracer -- --docs docs/tracer.md",
         ),
-        ("docs/quality.md", "cargo bench --bench quality"),
-        ("docs/performance.md", "cargo bench --bench speed -- ratio"),
-        ("docs/metrics.md", "cargo bench --bench speed --"),
-        ("docs/zsobol.md", "cargo run --release --example tracer --"),
+        (
+            "docs/quality.md",
+            "cargo bench -p wellspread-lab --bench quality",
+        ),
+        (
+            "docs/performance.md",
+            "cargo bench -p wellspread-lab --bench speed -- ratio",
+        ),
+        (
+            "docs/metrics.md",
+            "cargo bench -p wellspread-lab --bench speed --",
+        ),
+        (
+            "docs/zsobol.md",
+            "cargo run --release -p wellspread-lab --example tracer --",
+        ),
         (
             "docs/blue_noise.md",
-            "cargo run --release --example blue_noise --",
+            "cargo run --release -p wellspread-lab --example blue_noise --",
         ),
         (
             "docs/warps.md",
-            "cargo run --release --example warps -- docs/images/warps.png",
+            "cargo run --release -p wellspread-lab --example warps -- docs/images/warps.png",
         ),
         (
             "docs/gpu.md",
@@ -89,4 +101,63 @@ fn ci_script_names_only_files_that_exist() {
             assert!(root.join(word).exists(), ".ci/run names missing {word}");
         }
     }
+}
+
+/// The lab's programs that a page's command names: each `--example NAME`
+/// and `--bench NAME` in the README, ARCHITECTURE.md and docs/ is a file of
+/// `lab/` (the workspace member that holds them), and its command line
+/// says `-p wellspread-lab`, since a plain `cargo run --example` at the
+/// root finds nothing since the lab moved out of the library.
+#[test]
+fn commands_name_lab_programs_that_exist() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut pages = vec!["README.md".to_owned(), "ARCHITECTURE.md".to_owned()];
+    for entry in std::fs::read_dir(root.join("docs")).unwrap() {
+        let name = entry.unwrap().file_name().into_string().unwrap();
+        if name.ends_with(".md") {
+            pages.push(format!("docs/{name}"));
+        }
+    }
+    let mut named = 0;
+    for page in &pages {
+        let text = read(page);
+        // Commands wrap across lines in prose: read the page as one line.
+        let flat = text.split_whitespace().collect::<Vec<_>>().join(" ");
+        for (flag, folder) in [("--example ", "examples"), ("--bench ", "benches")] {
+            for (at, _) in flat.match_indices(flag) {
+                let name: String = flat[at + flag.len()..]
+                    .chars()
+                    .take_while(|c| c.is_alphanumeric() || *c == '_')
+                    .collect();
+                let single = root.join(format!("lab/{folder}/{name}.rs"));
+                let folder_main = root.join(format!("lab/{folder}/{name}/main.rs"));
+                assert!(
+                    single.exists() || folder_main.exists(),
+                    "{page} names {flag}{name}, which lab/{folder}/ lacks"
+                );
+                let start = flat[..at].rfind("cargo ").unwrap_or(0);
+                assert!(
+                    flat[start..at].contains("-p wellspread-lab"),
+                    "{page}: `{}` lacks -p wellspread-lab",
+                    &flat[start..at + flag.len() + name.len()]
+                );
+                named += 1;
+            }
+        }
+    }
+    assert!(named > 10, "only {named} commands found");
+    // The README's first command renders every scene; its second is the
+    // library's `cargo test`, which builds none of the lab.
+    let readme = read("README.md");
+    let block = readme.split("```sh\n").nth(1).unwrap();
+    let mut lines = block.lines();
+    assert!(
+        lines
+            .next()
+            .unwrap()
+            .starts_with("cargo run --release -p wellspread-lab --example tracer ")
+    );
+    assert!(lines.next().unwrap().starts_with("cargo test "));
+    let manifest = read("Cargo.toml");
+    assert!(manifest.contains("default-members = [\".\"]"), "Cargo.toml");
 }

@@ -1,0 +1,169 @@
+//! The loop a renderer writes on wellspread, in one small path tracer: a
+//! sphere on a floor under a square light, depth of field, next-event
+//! estimation. Read this first; the big `tracer` is the measurement lab.
+//!
+//! ```sh
+//! cargo run --release -p wellspread-lab --example path_tracer -- --sampler blue-noise --spp 16
+//! ```
+
+use std::error::Error;
+use std::f32::consts::PI;
+use std::path::PathBuf;
+
+use clap::Parser;
+use wellspread::glam::{Vec2, Vec3};
+use wellspread::{Domain, PixelSampler, PixelSamplerKind, warp};
+
+/// Renders the scene into a PNG.
+#[derive(Parser, Debug)]
+struct Args {
+    /// Pixel sampler: sobol, zsobol, blue-noise, cmj, random, ...
+    #[arg(long, default_value = "sobol")]
+    sampler: PixelSamplerKind,
+    /// Samples per pixel
+    #[arg(long, default_value_t = 16)]
+    spp: u32,
+    /// The animation frame: each frame gets new patterns
+    #[arg(long, default_value_t = 0)]
+    frame: u32,
+    /// The PNG to write (its folder is made if missing)
+    #[arg(long, default_value = "out/path_tracer.png")]
+    out: PathBuf,
+}
+
+const SIZE: [u32; 2] = [160, 120];
+const BOUNCES: u32 = 4;
+const LIGHT_SAMPLES: u32 = 2;
+// Domain keys: any u32, one per purpose.
+const BOUNCE: u32 = 1;
+const LIGHT: u32 = 2;
+// The light: a square facing down, one corner and two edges.
+const CORNER: Vec3 = Vec3::new(-0.5, 2.0, -0.5);
+const EDGE_X: Vec3 = Vec3::new(1.0, 0.0, 0.0);
+const EDGE_Z: Vec3 = Vec3::new(0.0, 0.0, 1.0);
+const EMITTED: f32 = 6.0;
+const SKY: Vec3 = Vec3::new(0.05, 0.07, 0.1);
+const SPHERE: (Vec3, f32) = (Vec3::new(0.0, 0.6, 0.0), 0.6);
+const EYE: Vec3 = Vec3::new(0.0, 1.0, 3.5);
+const FOCUS: f32 = 3.5; // the sphere is in focus
+const APERTURE: f32 = 0.05; // lens radius
+
+struct Hit {
+    point: Vec3,
+    normal: Vec3,
+    albedo: Vec3,
+    light: bool,
+}
+
+/// The nearest surface along `origin + t dir`, `t > 1e-4`.
+fn intersect(origin: Vec3, dir: Vec3) -> Option<Hit> {
+    let mut best: Option<(f32, Hit)> = None;
+    let mut keep = |t: f32, normal: Vec3, albedo: Vec3, light: bool| {
+        if t > 1e-4 && t.is_finite() && best.as_ref().is_none_or(|(b, _)| t < *b) {
+            let point = origin + t * dir;
+            best = Some((
+                t,
+                Hit {
+                    point,
+                    normal,
+                    albedo,
+                    light,
+                },
+            ));
+        }
+    };
+    let (centre, radius) = SPHERE;
+    let oc = origin - centre;
+    let (b, c) = (oc.dot(dir), oc.length_squared() - radius * radius);
+    if b * b >= c {
+        let t = -b - (b * b - c).sqrt();
+        let normal = (origin + t * dir - centre) / radius;
+        keep(t, normal, Vec3::new(0.8, 0.3, 0.2), false);
+    }
+    // The floor (y = 0, 8 x 8) and the light (its underside).
+    let (floor, ceiling) = (-origin.y / dir.y, (CORNER.y - origin.y) / dir.y);
+    let (p, q) = (origin + floor * dir, origin + ceiling * dir - CORNER);
+    if p.x.abs().max(p.z.abs()) < 4.0 {
+        keep(floor, Vec3::Y, Vec3::splat(0.7), false);
+    }
+    if (0.0..1.0).contains(&q.x) && (0.0..1.0).contains(&q.z) && dir.y > 0.0 {
+        keep(ceiling, Vec3::NEG_Y, Vec3::ZERO, true);
+    }
+    best.map(|(_, hit)| hit)
+}
+
+/// One path of the pixel sample whose root domain is `root`, passed by
+/// value: every random number comes from it or from its children.
+fn radiance<S: PixelSampler + Copy>(mut root: Domain<S>, pixel: [u32; 2]) -> Vec3 {
+    // Film and lens are one 4D draw: coupled, they stay stratified together.
+    let film_lens = root.next_4d();
+    let film = (Vec2::new(pixel[0] as f32, pixel[1] as f32) + Vec2::new(film_lens.x, film_lens.y))
+        / SIZE[1] as f32;
+    let aspect = SIZE[0] as f32 / SIZE[1] as f32;
+    let lens = APERTURE * warp::concentric_disk(Vec2::new(film_lens.z, film_lens.w));
+    let focus = EYE + FOCUS * Vec3::new(0.8 * (film.x - 0.5 * aspect), 0.8 * (0.5 - film.y), -1.0);
+    let mut origin = EYE + lens.extend(0.0);
+    let mut dir = (focus - origin).normalize();
+    let (mut throughput, mut sum) = (Vec3::ONE, Vec3::ZERO);
+    for b in 0..BOUNCES {
+        let Some(hit) = intersect(origin, dir) else {
+            return sum + throughput * SKY;
+        };
+        if hit.light {
+            // Seen directly; later bounces counted the light by sampling it.
+            return sum + Vec3::splat(if b == 0 { EMITTED } else { 0.0 });
+        }
+        // Bounce b's draws never depend on what the bounces before it drew.
+        let mut bounce = root.branch(BOUNCE).branch(b);
+        let brdf = hit.albedo / PI;
+        for j in 0..LIGHT_SAMPLES {
+            // Sub-sample j of LIGHT_SAMPLES: together, a stratified set.
+            let u = bounce.split(LIGHT, LIGHT_SAMPLES, j).next_2d();
+            let on_light = warp::rectangle(u, CORNER, EDGE_X, EDGE_Z);
+            let to_light = on_light - hit.point;
+            let (distance2, wi) = (to_light.length_squared(), to_light.normalize());
+            let (cos_surface, cos_light) = (hit.normal.dot(wi), wi.y);
+            let shadowed = intersect(hit.point, wi).is_some_and(|h| !h.light);
+            if cos_surface > 0.0 && cos_light > 0.0 && !shadowed {
+                // The area pdf turned into a solid-angle pdf.
+                let pdf = warp::rectangle_pdf(EDGE_X, EDGE_Z) * distance2 / cos_light;
+                sum += throughput * brdf * EMITTED * cos_surface / (pdf * LIGHT_SAMPLES as f32);
+            }
+        }
+        // The next direction: cosine-weighted about the normal.
+        let local = warp::cosine_hemisphere(bounce.next_2d());
+        let pdf = warp::cosine_hemisphere_pdf(local.z);
+        let (tangent, bitangent) = hit.normal.any_orthonormal_pair();
+        dir = (local.x * tangent + local.y * bitangent + local.z * hit.normal).normalize();
+        throughput *= brdf * local.z / pdf;
+        origin = hit.point;
+    }
+    sum
+}
+
+fn main() -> Result<(), Box<dyn Error>> {
+    let args = Args::parse();
+    let sampler = args.sampler.build(args.spp, SIZE, args.frame)?;
+    let mut bytes = Vec::with_capacity((SIZE[0] * SIZE[1] * 3) as usize);
+    // Gamma 2.2, clamped to 8 bits.
+    let encode = |c: f32| (255.0 * c.max(0.0).powf(1.0 / 2.2)).min(255.0) as u8;
+    for y in 0..SIZE[1] {
+        for x in 0..SIZE[0] {
+            let sum: Vec3 = (0..args.spp)
+                .map(|i| radiance(sampler.start([x, y], i), [x, y]))
+                .sum();
+            bytes.extend((sum / args.spp as f32).to_array().map(encode));
+        }
+    }
+    if let Some(folder) = args.out.parent() {
+        std::fs::create_dir_all(folder)?;
+    }
+    let file = std::io::BufWriter::new(std::fs::File::create(&args.out)?);
+    let mut encoder = png::Encoder::new(file, SIZE[0], SIZE[1]);
+    encoder.set_color(png::ColorType::Rgb);
+    let mut writer = encoder.write_header()?;
+    writer.write_image_data(&bytes)?;
+    writer.finish()?;
+    println!("{}", args.out.display());
+    Ok(())
+}

@@ -1,0 +1,526 @@
+//! The tracer's command line: the options, their parsing and checks, and
+//! the help text. Errors are one line with exit status 2, through the
+//! examples' shared plumbing (`examples/shared/cli.rs`).
+
+use std::ffi::OsString;
+use std::io::Write;
+use std::path::PathBuf;
+
+use clap::Parser;
+
+use crate::render::{Filter, TracerSampler};
+use crate::scenes::{Built, SceneKind};
+use crate::shared::{self, Failure};
+
+/// What the tracer writes and how it exits; shown under `--help`.
+const HELP: &str = "\
+Output, under --out (default out/), per scene as <scene>-<W>x<H>-<filter>/:
+  reference.png              the reference image every RMSE is measured
+                             against: what infinitely many samples would give
+                             under the same filter (exact or quadrature where
+                             the scene allows, else 4096 samples per pixel;
+                             cornell: 4096 Sobol' samples per pixel);
+                             cached as out/reference-*.bin
+  <sampler>-<spp>spp.png     each frame (the first one's)
+  contact-<spp>spp.png       the reference and every sampler, cropped to
+                             where the scene aliases, labelled with RMSE
+  error-<spp>spp.png         each sampler's error image (frame - reference),
+                             same crop, grey = 0, black/white = -/+ 4x the
+                             smallest RMSE in the sheet
+  error-spectrum-<spp>spp.svg radially averaged periodogram of the error
+                             image (frame - reference), one line per sampler,
+                             low frequencies on the left, averaged over frames
+  trade.svg                  RMSE against seconds per frame, log-log
+The markdown tables go to stdout; --report writes the rows as JSON
+(scene, sampler, spp, rmse, blurred_rmse, low_frequency_power, seconds,
+frames, width, height) and --docs the tables as a markdown page headed by the
+command and machine (on a page that has them, only the text between the
+tracer's markers is replaced).
+With --frames K (default 1, 4 for cornell, whose path-traced error is
+noisier), rmse and blurred_rmse are root-mean-square over the K frames.
+
+Output paths are checked before rendering starts.";
+
+/// The largest count accepted on the command line: a 4096 x 4096 grid,
+/// beyond which a single frame takes minutes anyway.
+const MAX_SPP: u32 = 1 << 24;
+const MAX_SIDE: u32 = 16_384;
+/// Most frames per row on the command line.
+const MAX_FRAMES: u32 = 1024;
+
+/// Renders the aliasing scenes (checker, moire, moire-resolved, polygon)
+/// and a path-traced Cornell box (cornell) with every pixel sampler at
+/// several sample counts, measures RMSE and blurred
+/// RMSE against a cached reference, writes PNGs, contact sheets,
+/// error spectra and error-vs-time plots, and prints the trade table.
+#[derive(Debug, Parser)]
+pub struct Cli {
+    /// Comma-separated scenes: checker, moire, moire-resolved, polygon,
+    /// cornell (box filter only) [default: all]
+    #[arg(long = "scene", value_name = "LIST", value_delimiter = ',', value_parser = parse_scene)]
+    scenes: Vec<SceneKind>,
+    /// Comma-separated samplers, from those listed below [default: all]
+    #[arg(long = "sampler", value_name = "LIST", value_delimiter = ',', value_parser = parse_sampler)]
+    samplers: Vec<TracerSampler>,
+    /// Comma-separated samples per pixel for every scene, each in
+    /// 1..=16777216 [default: 1,4,16,64,256; 4,16 for cornell]
+    #[arg(long = "spp", value_name = "LIST", value_delimiter = ',', value_parser = parse_spp)]
+    spps: Vec<u32>,
+    /// Film size for every scene, N or WxH, sides in 1..=16384 [default:
+    /// 192x192 for checker and the moires; 5x7 and 64x64 for polygon;
+    /// 128x128 for cornell]
+    #[arg(long, value_name = "N|WxH", value_parser = parse_size)]
+    size: Option<(u32, u32)>,
+    /// Reconstruction filter: box, gaussian, mitchell
+    #[arg(long, value_name = "NAME", default_value = "box", value_parser = parse_filter)]
+    filter: Filter,
+    /// First frame (what a renderer passes per frame: the `frame` of
+    /// pattern_seed, Padded, ZSobol and BlueNoise), 0 to 4294967295
+    #[arg(long, alias = "seed", value_name = "N", default_value = "0", value_parser = shared::whole_number)]
+    frame: u32,
+    /// Frames per row, frame..=frame+K-1 (which must not pass
+    /// 4294967295); errors are RMS over them [default: 1; 4 for cornell]
+    #[arg(long, alias = "seeds", value_name = "K",
+          value_parser = clap::value_parser!(u32).range(1..=i64::from(MAX_FRAMES)))]
+    frames: Option<u32>,
+    /// RMSE the "to reach" columns aim at (positive)
+    #[arg(long, value_name = "RMSE", default_value_t = 0.01, value_parser = parse_target)]
+    target: f64,
+    /// Output directory
+    #[arg(long, value_name = "DIR", default_value = "out")]
+    out: PathBuf,
+    /// Also write the rows as a JSON array to FILE
+    #[arg(long, value_name = "FILE")]
+    report: Option<PathBuf>,
+    /// Also write the tables as a markdown page to FILE, headed by the
+    /// command and the machine
+    #[arg(long, value_name = "FILE")]
+    docs: Option<PathBuf>,
+}
+
+/// The run, with defaults filled in and lists deduplicated.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Options {
+    pub scenes: Vec<SceneKind>,
+    pub samplers: Vec<TracerSampler>,
+    /// The counts `--spp` asked for, ascending; `None`: each scene's own.
+    pub spps: Option<Vec<u32>>,
+    pub size: Option<(u32, u32)>,
+    pub filter: Filter,
+    pub frame: u32,
+    /// The `--frames` asked for; `None`: each scene's own.
+    pub frames: Option<u32>,
+    pub target: f64,
+    pub out: PathBuf,
+    pub report: Option<PathBuf>,
+    pub docs: Option<PathBuf>,
+}
+
+/// `items` without repeats, or `all` when `items` is empty.
+fn or_all<T: PartialEq>(items: Vec<T>, all: Vec<T>) -> Vec<T> {
+    if items.is_empty() { all } else { dedup(items) }
+}
+
+fn dedup<T: PartialEq>(items: Vec<T>) -> Vec<T> {
+    let mut list = Vec::new();
+    for item in items {
+        if !list.contains(&item) {
+            list.push(item);
+        }
+    }
+    list
+}
+
+impl Options {
+    /// The run `cli` asks for. The one check clap cannot make alone: the
+    /// frames `frame..=frame + frames - 1` must all be u32s, for every scene's
+    /// count. They are rejected rather than wrapped to 0, 1, ..., so that
+    /// the range the run reports is the range it renders.
+    fn from_cli(cli: Cli) -> Result<Self, Failure> {
+        // The path tracer has no wide filters: a run of every scene leaves
+        // it out, and asking for it is an error.
+        let path_traced = |scene: &SceneKind| matches!(scene.build(1, 1), Built::PathTraced);
+        if cli.filter != Filter::Box
+            && let Some(scene) = cli.scenes.iter().find(|s| path_traced(s))
+        {
+            return Err(Failure::Input(format!(
+                "--scene {scene} renders with the box filter only, not --filter {}",
+                cli.filter
+            )));
+        }
+        let all_scenes: Vec<SceneKind> = SceneKind::ALL
+            .into_iter()
+            .filter(|scene| cli.filter == Filter::Box || !path_traced(scene))
+            .collect();
+        let spps = (!cli.spps.is_empty()).then(|| {
+            let mut spps = dedup(cli.spps);
+            // Ascending, for the log-log interpolation between counts.
+            spps.sort_unstable();
+            spps
+        });
+        let scenes = or_all(cli.scenes, all_scenes);
+        let frames = cli.frames.unwrap_or_else(|| {
+            let most = scenes.iter().map(|s| s.default_frames()).max();
+            most.unwrap_or(1)
+        });
+        let last_frame = u64::from(cli.frame) + u64::from(frames) - 1;
+        if last_frame > u64::from(u32::MAX) {
+            let what = match cli.frames {
+                Some(k) => format!("--frames {k}"),
+                None => format!("the default {frames} frames"),
+            };
+            return Err(Failure::Input(format!(
+                "--frame {} with {what} runs to frame {last_frame}, past the last one, {}; \
+                 use a --frame of at most {} or fewer --frames",
+                cli.frame,
+                u32::MAX,
+                u32::MAX - (frames - 1),
+            )));
+        }
+        Ok(Self {
+            scenes,
+            samplers: or_all(cli.samplers, TracerSampler::all()),
+            spps,
+            size: cli.size,
+            filter: cli.filter,
+            frame: cli.frame,
+            frames: cli.frames,
+            target: cli.target,
+            out: cli.out,
+            report: cli.report,
+            docs: cli.docs,
+        })
+    }
+
+    /// The samplers `scene` renders with, in the order given
+    /// (`sobol-pairs` only where there is a lens).
+    pub fn samplers_for(&self, scene: SceneKind) -> Vec<TracerSampler> {
+        self.samplers
+            .iter()
+            .copied()
+            .filter(|sampler| sampler.renders(scene))
+            .collect()
+    }
+
+    /// The sample counts `scene` renders at, ascending.
+    pub fn spps_for(&self, scene: SceneKind) -> Vec<u32> {
+        self.spps
+            .clone()
+            .unwrap_or_else(|| scene.default_spps().to_vec())
+    }
+
+    /// The film sizes `scene` renders at.
+    pub fn sizes_for(&self, scene: SceneKind) -> Vec<(u32, u32)> {
+        match self.size {
+            Some(size) => vec![size],
+            None => scene.default_sizes().to_vec(),
+        }
+    }
+
+    /// Frames per row for `scene`.
+    pub fn frames_for(&self, scene: SceneKind) -> u32 {
+        self.frames.unwrap_or_else(|| scene.default_frames())
+    }
+
+    /// The frames of `scene`'s rows, in order: `frame..=frame + frames -
+    /// 1`, which [`Options::from_cli`] checked to fit in a u32.
+    pub fn frame_range(&self, scene: SceneKind) -> std::ops::RangeInclusive<u32> {
+        self.frame..=self.frame + (self.frames_for(scene) - 1)
+    }
+}
+
+/// Parses the arguments after the program name. `Ok(None)`: `--help` was
+/// written to `help_out` and the tool stops with status 0. Every error is
+/// [`Failure::Input`], one line, exit status 2.
+pub fn parse(
+    args: impl IntoIterator<Item = OsString>,
+    help_out: &mut dyn Write,
+) -> Result<Option<Options>, Failure> {
+    let names: Vec<&str> = TracerSampler::all().iter().map(|s| s.name()).collect();
+    let after_help = format!(
+        "Samplers: {}\n(the library's pixel samplers, any case or alias such as cmj; in cornell\n\
+         each draws film and lens as one 4D point, and sobol-pairs, cornell only, is\n\
+         sobol drawing them as two 2D pairs)\n\n{HELP}\n\n{}",
+        names.join(" "),
+        shared::EXIT_CODES
+    );
+    match shared::parse::<Cli>("tracer", &after_help, args, help_out)? {
+        Some(cli) => Options::from_cli(cli).map(Some),
+        None => Ok(None),
+    }
+}
+
+fn parse_scene(text: &str) -> Result<SceneKind, String> {
+    text.parse()
+}
+
+fn parse_sampler(text: &str) -> Result<TracerSampler, String> {
+    text.parse()
+}
+
+fn parse_filter(text: &str) -> Result<Filter, String> {
+    text.parse()
+}
+
+fn parse_count(text: &str, max: u32) -> Result<u32, String> {
+    match text.parse::<u32>() {
+        Ok(n) if (1..=max).contains(&n) => Ok(n),
+        _ => Err(format!("{text:?} is not an integer in 1..={max}")),
+    }
+}
+
+fn parse_spp(text: &str) -> Result<u32, String> {
+    parse_count(text, MAX_SPP)
+}
+
+/// `N` or `WxH`. The error quotes the whole value, whichever side is bad.
+fn parse_size(text: &str) -> Result<(u32, u32), String> {
+    let (w, h) = text.split_once('x').unwrap_or((text, text));
+    let side = |s: &str| s.parse::<u32>().ok().filter(|n| (1..=MAX_SIDE).contains(n));
+    match (side(w), side(h)) {
+        (Some(w), Some(h)) => Ok((w, h)),
+        _ => Err(format!(
+            "{text:?} is not a film size: use N or WxH with whole sides in 1..={MAX_SIDE}"
+        )),
+    }
+}
+
+fn parse_target(text: &str) -> Result<f64, String> {
+    text.parse()
+        .ok()
+        .filter(|t: &f64| t.is_finite() && *t > 0.0)
+        .ok_or_else(|| {
+            let sign = if text.starts_with('-') {
+                "the value must be non-negative: "
+            } else {
+                ""
+            };
+            format!("{sign}{} is not a positive number", shared::quoted(text))
+        })
+}
+#[cfg(test)]
+pub(crate) mod tests {
+    use super::*;
+    use crate::render::SOBOL;
+    use wellspread::{PixelSamplerKind, SamplerKind};
+
+    fn args(list: &[&str]) -> Vec<OsString> {
+        list.iter().map(OsString::from).collect()
+    }
+
+    pub(crate) fn run_options(list: &[&str]) -> Options {
+        match parse(args(list), &mut Vec::new()) {
+            Ok(Some(options)) => options,
+            other => panic!("{list:?}: {other:?}"),
+        }
+    }
+
+    /// The message of a bad command line, checked to be a one-line input
+    /// failure that `tracer: ` prefixes and that exits with status 2.
+    fn usage_error(list: &[&str]) -> String {
+        match parse(args(list), &mut Vec::new()) {
+            Err(failure @ Failure::Input(_)) => {
+                let mut stderr = Vec::new();
+                let status = shared::finish("tracer", Err(failure.clone()), &mut stderr);
+                let stderr = String::from_utf8(stderr).unwrap();
+                assert_eq!(status, 2, "{list:?}");
+                assert_eq!(stderr.lines().count(), 1, "{list:?}: {stderr}");
+                assert!(stderr.starts_with("tracer: "), "{list:?}: {stderr}");
+                failure.to_string()
+            }
+            other => panic!("{list:?} should be a usage error, got {other:?}"),
+        }
+    }
+
+    #[test]
+    fn no_arguments_mean_everything() {
+        let options = run_options(&[]);
+        assert_eq!(options.scenes, SceneKind::ALL);
+        assert_eq!(options.samplers, TracerSampler::all());
+        assert!(
+            options
+                .samplers
+                .contains(&TracerSampler::Pixel(PixelSamplerKind::ZSobol))
+        );
+        assert_eq!(options.spps, None);
+        for scene in SceneKind::ALL {
+            assert_eq!(options.spps_for(scene), scene.default_spps());
+            assert_eq!(options.sizes_for(scene), scene.default_sizes());
+        }
+        assert_eq!(options.filter, Filter::Box);
+        assert_eq!((options.frame, options.frames), (0, None));
+        assert_eq!(options.frame_range(SceneKind::Moire), 0..=0);
+        assert_eq!(options.frame_range(SceneKind::Cornell), 0..=3);
+        assert_eq!(options.out, PathBuf::from("out"));
+    }
+
+    #[test]
+    fn lists_narrow_the_run() {
+        let options = run_options(&[
+            "--scene",
+            "moire,checker,moire",
+            "--sampler=regular,n-rooks,zsobol",
+            "--spp",
+            "16,4",
+            "--size",
+            "32x8",
+            "--filter",
+            "mitchell",
+            "--frame",
+            "9",
+            "--frames=4",
+            "--report",
+            "r.json",
+            "--docs",
+            "d.md",
+        ]);
+        assert_eq!(options.scenes, [SceneKind::Moire, SceneKind::Checker]);
+        assert_eq!(
+            options.samplers,
+            [
+                TracerSampler::Pixel(PixelSamplerKind::Padded(SamplerKind::Regular)),
+                TracerSampler::Pixel(PixelSamplerKind::Padded(SamplerKind::NRooks)),
+                TracerSampler::Pixel(PixelSamplerKind::ZSobol)
+            ]
+        );
+        assert_eq!(options.spps_for(SceneKind::Moire), [4, 16]);
+        assert_eq!(options.size, Some((32, 8)));
+        assert_eq!(options.filter, Filter::Mitchell);
+        assert_eq!((options.frame, options.frames), (9, Some(4)));
+        assert_eq!(options.frame_range(SceneKind::Moire), 9..=12);
+        assert_eq!(options.report, Some(PathBuf::from("r.json")));
+        assert_eq!(options.docs, Some(PathBuf::from("d.md")));
+        assert_eq!(run_options(&["--size", "100"]).size, Some((100, 100)));
+        assert_eq!(
+            run_options(&["--scene", "moire-resolved"]).scenes,
+            [SceneKind::MoireResolved]
+        );
+    }
+
+    #[test]
+    fn bad_command_lines_are_one_line_with_status_2_and_name_the_item() {
+        for (bad, named) in [
+            (&["--scene", "teapot"][..], "teapot"),
+            (&["--sampler", "best"], "best"),
+            (&["--spp", "0"], "\"0\""),
+            (&["--spp", "4,,16"], "\"\""),
+            (&["--size", "0x4"], "\"0x4\""),
+            (&["--size", "big"], "\"big\""),
+            (&["--filter", "lanczos"], "lanczos"),
+            (&["--frame", "-1"], "must be non-negative"),
+            (&["--frame", "4294967296"], "4294967296"),
+            (&["--frames", "0"], "0"),
+            (&["--frames", "1025"], "1025"),
+            (&["--target", "0"], "\"0\""),
+            (
+                &["--target", "-1"],
+                "must be non-negative: \"-1\" is not a positive number",
+            ),
+            (&["--spp"], "--spp"),
+            (&["--frobnicate"], "--frobnicate"),
+        ] {
+            let message = usage_error(bad);
+            assert!(message.contains(named), "{bad:?}: {message}");
+        }
+        let message = usage_error(&["--sampler", "regular,jitterd"]);
+        assert!(message.contains("unknown sampler \"jitterd\""), "{message}");
+        for sampler in TracerSampler::all() {
+            assert!(message.contains(sampler.name()), "{sampler}: {message}");
+        }
+    }
+
+    #[test]
+    fn cornell_is_box_filtered_only() {
+        let message = usage_error(&["--scene", "moire,cornell", "--filter", "gaussian"]);
+        assert!(message.contains("--scene cornell"), "{message}");
+        // A run of every scene under a wide filter leaves cornell out.
+        let options = run_options(&["--filter", "mitchell"]);
+        assert!(!options.scenes.contains(&SceneKind::Cornell));
+        assert_eq!(options.scenes.len(), SceneKind::ALL.len() - 1);
+        assert!(run_options(&[]).scenes.contains(&SceneKind::Cornell));
+        // sobol-pairs renders cornell only.
+        let options = run_options(&["--sampler", "sobol,sobol-pairs"]);
+        assert_eq!(options.samplers_for(SceneKind::Moire), [SOBOL]);
+        assert_eq!(
+            options.samplers_for(SceneKind::Cornell),
+            [SOBOL, TracerSampler::SobolPairs]
+        );
+    }
+
+    #[test]
+    fn a_bad_size_quotes_the_whole_value() {
+        // Not the empty height after the `x`: the value as typed.
+        for bad in ["3x", "x3", "3x0", "3x16385", "3y3", "3x3x3", ""] {
+            let message = usage_error(&["--size", bad]);
+            assert!(
+                message.contains(&format!("{bad:?} is not a film size")),
+                "{bad:?}: {message}"
+            );
+        }
+        assert_eq!(run_options(&["--size", "16384x1"]).size, Some((16384, 1)));
+    }
+
+    #[test]
+    fn frames_past_u32_max_are_rejected_not_wrapped() {
+        let message = usage_error(&["--frame", "4294967295", "--frames", "3"]);
+        assert!(message.contains("4294967297"), "{message}");
+        assert!(message.contains("at most 4294967293"), "{message}");
+        // The last frames that fit are accepted, and reported as used.
+        let options = run_options(&["--frame", "4294967293", "--frames", "3"]);
+        assert_eq!(
+            options.frame_range(SceneKind::Checker),
+            4294967293..=u32::MAX
+        );
+        // cornell's default 4 frames count too, unless it is left out.
+        let message = usage_error(&["--frame", "4294967295"]);
+        assert!(message.contains("the default 4 frames"), "{message}");
+        assert!(message.contains("at most 4294967292"), "{message}");
+        let options = run_options(&["--frame", "4294967295", "--scene", "moire"]);
+        assert_eq!(options.frame_range(SceneKind::Moire), u32::MAX..=u32::MAX);
+    }
+
+    #[test]
+    fn the_old_seed_flags_are_hidden_aliases() {
+        // `frame`, never `seed`, for what a renderer passes per frame; the
+        // old spellings still parse, and --help shows only the new ones.
+        let options = run_options(&["--seed", "9", "--seeds", "4"]);
+        assert_eq!((options.frame, options.frames), (9, Some(4)));
+        let mut out = Vec::new();
+        parse(args(&["--help"]), &mut out).unwrap();
+        let help = String::from_utf8(out).unwrap();
+        assert!(!help.contains("--seed"), "{help}");
+    }
+
+    #[test]
+    fn help_lists_every_option_sampler_and_output() {
+        let mut out = Vec::new();
+        let parsed = parse(args(&["--spp", "4", "--help"]), &mut out).unwrap();
+        assert_eq!(parsed, None);
+        let help = String::from_utf8(out).unwrap();
+        for option in [
+            "--scene",
+            "--sampler",
+            "--spp",
+            "--size",
+            "--filter",
+            "--frame ",
+            "--frames",
+            "--target",
+            "--out",
+            "--report",
+            "--docs",
+            "--help",
+        ] {
+            assert!(help.contains(option), "{option} missing from --help");
+        }
+        for sampler in TracerSampler::all() {
+            assert!(
+                help.contains(sampler.name()),
+                "{sampler} missing from --help"
+            );
+        }
+        for text in ["reference.png", "error-spectrum", "Exit status"] {
+            assert!(help.contains(text), "{text} missing from --help");
+        }
+    }
+}

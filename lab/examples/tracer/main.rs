@@ -1,0 +1,614 @@
+//! The measurement lab: the classic aliasing scenes rendered with every
+//! wellspread sampler, and the speed/accuracy trade measured. It writes the
+//! tables of `docs/tracer.md`, `docs/zsobol.md` and `docs/blue_noise.md`.
+//! A renderer author reads `path_tracer.rs` first: the same library calls
+//! in one small file.
+//!
+//! ```sh
+//! cargo run --release -p wellspread-lab --example tracer                       # everything
+//! cargo run --release -p wellspread-lab --example tracer -- --scene moire --sampler regular,jittered --spp 16
+//! cargo run --release -p wellspread-lab --example tracer -- --scene moire-resolved --sampler sobol,zsobol --spp 4,16 --frames 16
+//! cargo run --release -p wellspread-lab --example tracer -- --help
+//! ```
+//!
+//! For each scene, size, sampler and sample count it renders a frame (or
+//! one per frame with `--frames K`), times it, and measures its RMSE and its
+//! blurred RMSE against a reference image. Every sampler goes through the
+//! library's [`PixelSampler`](wellspread::PixelSampler), by the names of
+//! [`PixelSamplerKind`](wellspread::PixelSamplerKind): the library's
+//! samplers padded across pixels, `zsobol` and `blue-noise`. The path-traced `cornell`
+//! draws every number through a [`Domain`](wellspread::Domain).
+//! `--help` lists the files it writes.
+//!
+//! The modules: `cli` (options and their checks), `render` (samplers,
+//! filters, the render loop), `scenes` and `reference` (what is rendered and
+//! its reference image), `cornell` and `path` (the path-traced scene and the
+//! domains that feed it), `analysis` (blurred RMSE, error spectra), `output`
+//! (PNG, contact sheets, SVG plots) and `report` (tables, JSON, the
+//! `--docs` page). This file runs them: per scene and size, per count, per
+//! sampler, per frame.
+
+mod analysis;
+mod cli;
+mod cornell;
+mod output;
+mod path;
+mod reference;
+mod render;
+mod report;
+mod scenes;
+#[path = "../shared/cli.rs"]
+mod shared;
+
+use std::ffi::OsString;
+use std::fs;
+use std::io::{IsTerminal as _, Write};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::{Duration, Instant};
+
+use indicatif::{ProgressBar, ProgressStyle};
+
+use crate::analysis::{blurred_rmse, error_spectrum};
+use crate::cli::Options;
+use crate::output::{
+    Crop, Picture, Series, Tile, contact_sheet, spectrum_svg, trade_plot_svg, viewing_zoom,
+};
+use crate::render::{FILM_DIMENSION, Image, TracerSampler, render};
+use crate::report::{Row, docs_page_from, json_report, low_frequency_power, markdown_tables};
+use crate::scenes::{Built, SceneKind};
+use crate::shared::Failure;
+
+/// Bins of the radially averaged error spectrum.
+const SPECTRUM_BINS: usize = 48;
+
+fn main() -> ExitCode {
+    let result = main_with(std::env::args_os().skip(1), &mut std::io::stdout().lock());
+    shared::exit("tracer", result)
+}
+
+/// The whole tool but the exit: parses `args` (after the program name),
+/// renders, and writes the tables (or `--help`) to `stdout`.
+fn main_with(
+    args: impl IntoIterator<Item = OsString>,
+    stdout: &mut dyn Write,
+) -> Result<(), Failure> {
+    match cli::parse(args, stdout)? {
+        Some(options) => run(&options, stdout),
+        None => Ok(()),
+    }
+}
+
+/// A failed write of `path`, exit status 1.
+fn write_error(path: &Path, e: std::io::Error) -> Failure {
+    Failure::Io(format!("cannot write {}: {e}", path.display()))
+}
+
+fn run(options: &Options, stdout: &mut dyn Write) -> Result<(), Failure> {
+    let started = Instant::now();
+    let out = &options.out;
+    fs::create_dir_all(out)
+        .map_err(|e| Failure::Io(format!("cannot create {}: {e}", out.display())))?;
+    for path in options.report.iter().chain(&options.docs) {
+        claim_output(path)?;
+    }
+    let frames: usize = options
+        .scenes
+        .iter()
+        .map(|&s| {
+            options.sizes_for(s).len()
+                * options.spps_for(s).len()
+                * options.samplers_for(s).len()
+                * options.frames_for(s) as usize
+        })
+        .sum::<usize>();
+    let progress = Progress::new(frames as u64);
+    let threads = rayon::current_num_threads();
+    progress.note(&format!(
+        "{threads} threads, filter {}, writing to {}",
+        options.filter,
+        out.display()
+    ));
+    let mut rows = Vec::new();
+    for &scene_kind in &options.scenes {
+        for (width, height) in options.sizes_for(scene_kind) {
+            rows.extend(run_scene(options, &progress, scene_kind, width, height)?);
+        }
+    }
+    progress.finish();
+    let tables = markdown_tables(options, &rows);
+    writeln!(stdout, "{tables}")
+        .map_err(|e| Failure::Io(format!("cannot write the tables: {e}")))?;
+    if let Some(path) = &options.report {
+        fs::write(path, json_report(&rows)).map_err(|e| write_error(path, e))?;
+    }
+    if let Some(path) = &options.docs {
+        let existing = shared::read_page(path)?;
+        fs::write(path, docs_page_from(&existing, &tables)).map_err(|e| write_error(path, e))?;
+    }
+    progress.note(&format!(
+        "done in {:.1} s on {threads} threads",
+        started.elapsed().as_secs_f64()
+    ));
+    Ok(())
+}
+
+/// Renders one scene at one size with every requested sampler and count,
+/// and writes its pictures; returns its rows.
+fn run_scene(
+    options: &Options,
+    progress: &Progress,
+    kind: SceneKind,
+    width: u32,
+    height: u32,
+) -> Result<Vec<Row>, Failure> {
+    let job = SceneJob::prepare(options, progress, kind, width, height)?;
+    let mut rows = Vec::new();
+    for spp in options.spps_for(kind) {
+        let mut frames = Vec::new();
+        for sampler in options.samplers_for(kind) {
+            if let Some(f) = job.measure(sampler, spp)? {
+                rows.push(f.row.clone());
+                frames.push(f);
+            }
+        }
+        // Nothing to show if every sampler rejected this count.
+        if !frames.is_empty() {
+            job.write_sheets(spp, &frames)?;
+        }
+    }
+    if !rows.is_empty() {
+        job.write_trade_plot(&rows)?;
+    }
+    progress.note(&format!("{}: wrote {}", job.label, job.dir.display()));
+    Ok(rows)
+}
+
+/// One scene at one size: where its files go and the reference every
+/// frame is measured against.
+struct SceneJob<'a> {
+    options: &'a Options,
+    progress: &'a Progress,
+    kind: SceneKind,
+    width: u32,
+    height: u32,
+    /// `<scene>-<W>x<H>-<filter>`, the directory's name.
+    label: String,
+    dir: PathBuf,
+    scene: Built,
+    reference: Image,
+    /// Pixels per film pixel in the full-frame PNGs.
+    zoom: u32,
+}
+
+/// One sampler's frames at one count: its row, and what the pictures need.
+struct Frames {
+    row: Row,
+    /// The first frame's image.
+    image: Image,
+    /// The first frame's RMSE (the row's is RMS over the frames).
+    first_rmse: f64,
+    /// The error spectrum, averaged over the frames.
+    spectrum: Vec<f64>,
+}
+
+impl<'a> SceneJob<'a> {
+    /// Creates the scene's directory, loads or computes its reference and
+    /// writes `reference.png`.
+    fn prepare(
+        options: &'a Options,
+        progress: &'a Progress,
+        kind: SceneKind,
+        width: u32,
+        height: u32,
+    ) -> Result<Self, Failure> {
+        let label = format!("{kind}-{width}x{height}-{}", options.filter);
+        let dir = options.out.join(&label);
+        fs::create_dir_all(&dir).map_err(|e| write_error(&dir, e))?;
+        let scene = kind.build(width, height);
+        let t = Instant::now();
+        let (reference, computed) =
+            reference::load_or_compute(&options.out, kind, &scene, width, height, options.filter)
+                .map_err(|e| Failure::Io(format!("reference for {label}: {e}")))?;
+        let frames = options.frame_range(kind);
+        progress.note(&format!(
+            "{label}: reference {} in {:.2} s; frames {}..={}",
+            if computed { "computed" } else { "loaded" },
+            t.elapsed().as_secs_f64(),
+            frames.start(),
+            frames.end()
+        ));
+        let zoom = viewing_zoom(width, height);
+        let path = dir.join("reference.png");
+        Picture::from_image(&reference, zoom)
+            .write_png(&path)
+            .map_err(|e| write_error(&path, e))?;
+        Ok(Self {
+            options,
+            progress,
+            kind,
+            width,
+            height,
+            label,
+            dir,
+            scene,
+            reference,
+            zoom,
+        })
+    }
+
+    /// Renders `sampler` at `spp` for every frame, writes the first
+    /// frame's image, and measures the row. `None` when the sampler rejects the
+    /// count (zsobol needs powers of two, say): that row is skipped, the
+    /// rest of the run goes on.
+    fn measure(&self, sampler: TracerSampler, spp: u32) -> Result<Option<Frames>, Failure> {
+        let options = self.options;
+        let (width, height) = (self.width, self.height);
+        let mut squares = (0.0, 0.0);
+        let mut spectrum = vec![0.0; SPECTRUM_BINS];
+        let mut first: Option<(Image, f64, f64)> = None;
+        let frames = options.frames_for(self.kind);
+        for (offset, frame) in options.frame_range(self.kind).enumerate() {
+            let frame_sampler = match sampler.build(spp, width, height, frame) {
+                Ok(frame_sampler) => frame_sampler,
+                Err(e) => {
+                    let label = &self.label;
+                    self.progress
+                        .note(&format!("{label}: skipping {sampler} at {spp} spp: {e}"));
+                    for _ in 0..frames {
+                        self.progress.frame_done();
+                    }
+                    return Ok(None);
+                }
+            };
+            let draw = || match &self.scene {
+                Built::Film(scene) => render(
+                    scene,
+                    width,
+                    height,
+                    &frame_sampler,
+                    FILM_DIMENSION,
+                    options.filter,
+                ),
+                Built::PathTraced => {
+                    path::render(width, height, spp, frame_sampler, sampler.film_lens())
+                }
+            };
+            // Only the first frame is timed; the others only add to the errors.
+            let (image, seconds) = if offset == 0 {
+                timed(draw)
+            } else {
+                (draw(), 0.0)
+            };
+            let rmse = image.rmse(&self.reference);
+            squares.0 += rmse * rmse;
+            let blurred = blurred_rmse(&image, &self.reference);
+            squares.1 += blurred * blurred;
+            let frame_spectrum = error_spectrum(&image, &self.reference, SPECTRUM_BINS);
+            for (sum, p) in spectrum.iter_mut().zip(frame_spectrum) {
+                *sum += p / f64::from(frames);
+            }
+            if offset == 0 {
+                first = Some((image, rmse, seconds));
+            }
+            self.progress.frame_done();
+        }
+        let Some((image, first_rmse, seconds)) = first else {
+            return Ok(None);
+        };
+        let path = self.dir.join(format!("{sampler}-{spp}spp.png"));
+        Picture::from_image(&image, self.zoom)
+            .write_png(&path)
+            .map_err(|e| write_error(&path, e))?;
+        let count = f64::from(frames);
+        let row = Row {
+            scene: self.kind,
+            width,
+            height,
+            sampler,
+            spp,
+            rmse: (squares.0 / count).sqrt(),
+            blurred_rmse: (squares.1 / count).sqrt(),
+            low_power: low_frequency_power(&spectrum),
+            seconds,
+            frames,
+        };
+        Ok(Some(Frames {
+            row,
+            image,
+            first_rmse,
+            spectrum,
+        }))
+    }
+
+    /// The pictures of one count: the contact sheet (the reference, then
+    /// each sampler's frame), the error images on one scale, and the error
+    /// spectra.
+    fn write_sheets(&self, spp: u32, frames: &[Frames]) -> Result<(), Failure> {
+        let crop = crop_for(self.kind, self.width, self.height);
+        let crop_zoom = (192 / crop.2.max(crop.3)).max(1);
+        let mut tiles = vec![Tile {
+            image: &self.reference,
+            label: vec!["reference".into(), self.label.clone()],
+        }];
+        tiles.extend(frames.iter().map(|f| Tile {
+            image: &f.image,
+            label: vec![
+                f.row.sampler.name().into(),
+                format!("{spp} spp rmse {:.4}", f.first_rmse),
+            ],
+        }));
+        let path = self.dir.join(format!("contact-{spp}spp.png"));
+        contact_sheet(&tiles, crop, crop_zoom)
+            .write_png(&path)
+            .map_err(|e| write_error(&path, e))?;
+        // Mid grey is no error; black / white are -/+ 4 times the smallest
+        // RMSE in the sheet.
+        let smallest = frames
+            .iter()
+            .map(|f| f.first_rmse)
+            .fold(f64::INFINITY, f64::min);
+        let errors: Vec<Image> = frames
+            .iter()
+            .map(|f| error_image(&f.image, &self.reference, 4.0 * smallest))
+            .collect();
+        let error_tiles: Vec<Tile<'_>> = frames
+            .iter()
+            .zip(&errors)
+            .map(|(f, image)| Tile {
+                image,
+                label: vec![f.row.sampler.name().into(), format!("{spp} spp error")],
+            })
+            .collect();
+        let path = self.dir.join(format!("error-{spp}spp.png"));
+        contact_sheet(&error_tiles, crop, crop_zoom)
+            .write_png(&path)
+            .map_err(|e| write_error(&path, e))?;
+        let series: Vec<(&str, Vec<f64>)> = frames
+            .iter()
+            .map(|f| (f.row.sampler.name(), f.spectrum.clone()))
+            .collect();
+        let frames = self.options.frames_for(self.kind);
+        let title = format!(
+            "{}: error spectrum at {spp} spp, {frames} frame{}",
+            self.label,
+            if frames == 1 { "" } else { "s" }
+        );
+        let path = self.dir.join(format!("error-spectrum-{spp}spp.svg"));
+        fs::write(&path, spectrum_svg(&title, &series)).map_err(|e| write_error(&path, e))
+    }
+
+    /// `trade.svg`: each sampler's RMSE against seconds per frame.
+    fn write_trade_plot(&self, rows: &[Row]) -> Result<(), Failure> {
+        let series: Vec<Series<'_>> = self
+            .options
+            .samplers_for(self.kind)
+            .into_iter()
+            .map(|sampler| Series {
+                name: sampler.name(),
+                points: rows
+                    .iter()
+                    .filter(|r| r.sampler == sampler)
+                    .map(|r| (r.spp, r.rmse, r.seconds))
+                    .collect(),
+            })
+            .filter(|s| !s.points.is_empty())
+            .collect();
+        let title = format!("{}: RMSE vs time per frame", self.label);
+        let path = self.dir.join("trade.svg");
+        fs::write(&path, trade_plot_svg(&title, &series, self.options.target))
+            .map_err(|e| write_error(&path, e))
+    }
+}
+
+/// Runs `f` repeatedly until 10 ms have passed and returns its last result
+/// and the fastest run: frames of a few microseconds (the 5 x 7 polygon)
+/// cannot be timed once, and the minimum is the run least disturbed by other
+/// work on a shared machine.
+fn timed<T>(mut f: impl FnMut() -> T) -> (T, f64) {
+    let budget = Duration::from_millis(10);
+    let started = Instant::now();
+    let mut best = f64::INFINITY;
+    loop {
+        let t = Instant::now();
+        let result = f();
+        best = best.min(t.elapsed().as_secs_f64());
+        if started.elapsed() >= budget {
+            return (result, best);
+        }
+    }
+}
+
+/// The part of the film each contact sheet shows, as fractions of the film:
+/// where the scene's aliasing is.
+fn crop_for(scene: SceneKind, width: u32, height: u32) -> Crop {
+    let (fx, fy, fw, fh) = match scene {
+        // Around the horizon, where the squares shrink below a pixel.
+        SceneKind::Checker => (0.3, 0.22, 0.375, 0.375),
+        // Just beyond the Nyquist contour, on the diagonal: where a regular
+        // grid paints false rings and correlated patterns show structure.
+        SceneKind::Moire => (0.3, 0.3, 0.375, 0.375),
+        // The middle of the resolved bands, where zsobol's error is blue.
+        SceneKind::MoireResolved => (0.3, 0.3, 0.375, 0.375),
+        SceneKind::Polygon => (0.0, 0.0, 1.0, 1.0),
+        // The glass sphere and the wall behind it, out of focus: caustic,
+        // refraction and the lens blur in one square.
+        SceneKind::Cornell => (0.5, 0.45, 0.5, 0.5),
+    };
+    let fraction = |f: f64, n: u32| ((f * f64::from(n)) as u32).min(n - 1);
+    let (x, y) = (fraction(fx, width), fraction(fy, height));
+    let w = ((fw * f64::from(width)).ceil() as u32).clamp(1, width - x);
+    let h = ((fh * f64::from(height)).ceil() as u32).clamp(1, height - y);
+    (x, y, w, h)
+}
+
+/// Where progress and notes go: an indicatif bar on stderr when stderr is
+/// a terminal, plain lines otherwise (logs, CI, pipes).
+struct Progress {
+    bar: Option<ProgressBar>,
+}
+
+impl Progress {
+    fn new(total: u64) -> Self {
+        let bar = std::io::stderr().is_terminal().then(|| {
+            let bar = ProgressBar::new(total);
+            if let Ok(style) =
+                ProgressStyle::with_template("{bar:40} {pos}/{len} frames, {elapsed} ({eta} left)")
+            {
+                bar.set_style(style);
+            }
+            bar
+        });
+        Self { bar }
+    }
+
+    fn note(&self, message: &str) {
+        match &self.bar {
+            Some(bar) => bar.println(format!("tracer: {message}")),
+            None => eprintln!("tracer: {message}"),
+        }
+    }
+
+    fn frame_done(&self) {
+        if let Some(bar) = &self.bar {
+            bar.inc(1);
+        }
+    }
+
+    fn finish(&self) {
+        if let Some(bar) = &self.bar {
+            bar.finish_and_clear();
+        }
+    }
+}
+
+/// Creates `path`'s directory and opens the file for writing (creating it
+/// empty if absent, keeping what it holds), so that a bad output path
+/// fails before any rendering.
+fn claim_output(path: &Path) -> Result<(), Failure> {
+    if let Some(parent) = path.parent().filter(|p| !p.as_os_str().is_empty()) {
+        fs::create_dir_all(parent)
+            .map_err(|e| Failure::Io(format!("cannot create {}: {e}", parent.display())))?;
+    }
+    fs::OpenOptions::new()
+        .append(true)
+        .create(true)
+        .open(path)
+        .map(drop)
+        .map_err(|e| write_error(path, e))
+}
+
+/// `frame - reference` as a picture: linear 1/2 where they agree, 0 and 1
+/// at `-range` and `+range` (clamped), on the sRGB curve's inverse so the
+/// display shows the error linearly.
+fn error_image(frame: &Image, reference: &Image, range: f64) -> Image {
+    let range = if range > 0.0 { range } else { 1.0 };
+    let pixels = frame
+        .pixels
+        .iter()
+        .zip(&reference.pixels)
+        .map(|(a, b)| {
+            std::array::from_fn(|c| {
+                let shown =
+                    (0.5 + 0.5 * (f64::from(a[c]) - f64::from(b[c])) / range).clamp(0.0, 1.0);
+                srgb_to_linear(shown) as f32
+            })
+        })
+        .collect();
+    Image {
+        width: frame.width,
+        height: frame.height,
+        pixels,
+    }
+}
+
+/// The inverse of the sRGB encoding `Picture` applies.
+fn srgb_to_linear(encoded: f64) -> f64 {
+    if encoded <= 0.040_45 {
+        encoded / 12.92
+    } else {
+        ((encoded + 0.055) / 1.055).powf(2.4)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::cli::tests::run_options;
+
+    #[test]
+    fn bad_output_paths_fail_before_rendering() {
+        let out = std::env::temp_dir().join(format!("tracer-test-{}", std::process::id()));
+        let mut options = run_options(&["--scene", "polygon", "--spp", "1", "--size", "4"]);
+        options.out = out.clone();
+        // A report "inside" a regular file cannot be created.
+        options.report = Some(PathBuf::from("Cargo.toml/report.json"));
+        let failure = run(&options, &mut Vec::new()).unwrap_err();
+        assert!(
+            matches!(&failure, Failure::Io(m) if m.contains("Cargo.toml")),
+            "{failure}"
+        );
+        assert_eq!(failure.status(), 1);
+        // Nothing was rendered: the scene's directory does not exist.
+        assert!(!out.join("polygon-4x4-box").exists());
+        let _ = fs::remove_dir_all(&out);
+    }
+
+    #[test]
+    fn an_endless_docs_page_is_refused_at_the_size_limit() {
+        // `--docs /dev/zero` grew to 4.2 GB: the page is read with a limit.
+        if !cfg!(target_os = "linux") {
+            return;
+        }
+        let out = std::env::temp_dir().join(format!("tracer-docs-{}", std::process::id()));
+        let mut options = run_options(&["--scene", "polygon", "--spp", "1", "--size", "4"]);
+        options.out = out.clone();
+        options.docs = Some(PathBuf::from("/dev/zero"));
+        let failure = run(&options, &mut Vec::new()).unwrap_err();
+        let _ = fs::remove_dir_all(&out);
+        assert_eq!(failure.status(), 2, "{failure}");
+        assert!(
+            failure
+                .to_string()
+                .contains("/dev/zero is larger than 4 MiB"),
+            "{failure}"
+        );
+    }
+
+    #[test]
+    fn a_missing_report_folder_is_made() {
+        // One behaviour for every tool: missing output folders are created.
+        let out = std::env::temp_dir().join(format!("tracer-report-{}", std::process::id()));
+        let mut options = run_options(&["--scene", "polygon", "--spp", "1", "--size", "4"]);
+        options.out = out.join("frames");
+        let report = out.join("missing/folder/report.json");
+        options.report = Some(report.clone());
+        run(&options, &mut Vec::new()).unwrap();
+        let written = fs::read_to_string(&report).unwrap();
+        let _ = fs::remove_dir_all(&out);
+        assert!(written.starts_with('['), "{written}");
+    }
+
+    #[test]
+    fn help_and_bad_arguments_render_nothing() {
+        let mut stdout = Vec::new();
+        main_with(["--help"].map(OsString::from), &mut stdout).unwrap();
+        let help = String::from_utf8(stdout).unwrap();
+        assert!(help.contains("Usage: tracer [OPTIONS]"), "{help}");
+        let failure = main_with(["--size", "3x"].map(OsString::from), &mut Vec::new()).unwrap_err();
+        assert_eq!(failure.status(), 2, "{failure}");
+    }
+
+    #[test]
+    fn crops_stay_inside_the_film() {
+        for scene in SceneKind::ALL {
+            for (w, h) in [(1, 1), (5, 7), (64, 64), (256, 256), (300, 17)] {
+                let (x, y, cw, ch) = crop_for(scene, w, h);
+                assert!(
+                    cw >= 1 && ch >= 1 && x + cw <= w && y + ch <= h,
+                    "{scene} {w}x{h}"
+                );
+            }
+        }
+    }
+}

@@ -1,0 +1,533 @@
+//! The render core: where each pixel's samples go (the library's
+//! [`PixelSampler`]), what they see (the scene), and how they become pixels
+//! (the reconstruction filter).
+//!
+//! Every pixel value is a fixed sequence of f64 additions in a fixed order,
+//! whichever thread computes it, so the image is bit-identical for any
+//! thread count (the test at the bottom checks 1 against 2 threads).
+
+use std::fmt;
+use std::str::FromStr;
+
+use rayon::prelude::*;
+use wellspread::{AnyPixelSampler, PixelSampler, PixelSamplerKind, SamplerKind};
+
+use crate::path::FilmLens;
+use crate::scenes::{Rgb, Scene, SceneKind};
+
+/// A linear-RGB image, row-major, row 0 at the top.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Image {
+    pub width: u32,
+    pub height: u32,
+    pub pixels: Vec<Rgb>,
+}
+
+impl Image {
+    /// Root-mean-square difference over every pixel and channel, in f64.
+    pub fn rmse(&self, other: &Image) -> f64 {
+        assert_eq!((self.width, self.height), (other.width, other.height));
+        let sum: f64 = self
+            .pixels
+            .iter()
+            .zip(&other.pixels)
+            .flat_map(|(a, b)| (0..3).map(move |c| f64::from(a[c]) - f64::from(b[c])))
+            .map(|d| d * d)
+            .sum();
+        (sum / (3 * self.pixels.len()) as f64).sqrt()
+    }
+}
+
+/// The reconstruction filter: how samples are weighted into pixels
+/// (Smith 1995, "A Pixel Is Not A Little Square"). Every filter here is
+/// separable, `w(dx, dy) = f(dx) f(dy)`, with `d` measured in pixels from
+/// the pixel centre.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Filter {
+    /// Each pixel averages its own samples: radius 1/2, the little square.
+    Box,
+    /// Gaussian with sigma 1/2 pixel, cut at radius 3 sigma = 1.5 and
+    /// shifted down by its value there so it reaches zero continuously.
+    Gaussian,
+    /// Mitchell & Netravali 1988 with B = C = 1/3, radius 2: their
+    /// recommended trade between blur and ringing.
+    Mitchell,
+}
+
+impl Filter {
+    pub const ALL: [Filter; 3] = [Filter::Box, Filter::Gaussian, Filter::Mitchell];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Filter::Box => "box",
+            Filter::Gaussian => "gaussian",
+            Filter::Mitchell => "mitchell",
+        }
+    }
+
+    /// Half-width of the support, in pixels.
+    pub fn radius(self) -> f64 {
+        match self {
+            Filter::Box => 0.5,
+            Filter::Gaussian => 1.5,
+            Filter::Mitchell => 2.0,
+        }
+    }
+
+    /// Offsets from the pixel centre where the 1D profile is not smooth
+    /// (its ends and, for Mitchell, the joins of its cubic pieces), in
+    /// increasing order: the quadrature reference integrates piece by piece.
+    pub fn breaks(self) -> &'static [f64] {
+        match self {
+            Filter::Box => &[-0.5, 0.5],
+            Filter::Gaussian => &[-1.5, 1.5],
+            Filter::Mitchell => &[-2.0, -1.0, 0.0, 1.0, 2.0],
+        }
+    }
+
+    /// The 1D profile at offset `d` pixels; zero outside the radius.
+    #[inline]
+    pub fn weight_1d(self, d: f64) -> f64 {
+        let d = d.abs();
+        match self {
+            Filter::Box => f64::from(u8::from(d < 0.5)),
+            Filter::Gaussian => {
+                const SIGMA: f64 = 0.5;
+                let g = |t: f64| (-t * t / (2.0 * SIGMA * SIGMA)).exp();
+                (g(d) - g(1.5)).max(0.0)
+            }
+            // Mitchell & Netravali's recommended B = C = 1/3.
+            Filter::Mitchell => wellspread::filter::mitchell_netravali(d, 1.0 / 3.0, 1.0 / 3.0),
+        }
+    }
+}
+
+impl fmt::Display for Filter {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for Filter {
+    type Err = String;
+
+    fn from_str(name: &str) -> Result<Self, Self::Err> {
+        Filter::ALL
+            .into_iter()
+            .find(|filter| filter.name() == name)
+            .ok_or_else(|| {
+                format!("unknown filter {name:?}; expected one of: box gaussian mitchell")
+            })
+    }
+}
+
+/// A sampler as the command line names it: one of the library's pixel
+/// samplers ([`PixelSamplerKind::all`], so a new one appears here by
+/// itself), or `sobol-pairs`, the control of the path-traced scene's
+/// 4D-versus-pairs comparison.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum TracerSampler {
+    /// `kind.build(spp, [width, height], frame)`. In the path-traced scene
+    /// its film offset and lens point are one `next_4d` draw.
+    Pixel(PixelSamplerKind),
+    /// `sobol` with the path-traced scene's film offset and lens point
+    /// drawn as two `next_2d` pairs. The 2D scenes draw no lens, where it
+    /// would be `sobol` again, so it renders only the path-traced one.
+    SobolPairs,
+}
+
+/// `sobol`, the pixel sampler both sides of the 4D-versus-pairs rows use.
+pub const SOBOL: TracerSampler = TracerSampler::Pixel(PixelSamplerKind::Padded(SamplerKind::Sobol));
+
+impl TracerSampler {
+    /// Every sampler, in the order tables list them.
+    pub fn all() -> Vec<TracerSampler> {
+        PixelSamplerKind::all()
+            .map(TracerSampler::Pixel)
+            .chain([TracerSampler::SobolPairs])
+            .collect()
+    }
+
+    /// The command-line name.
+    pub fn name(self) -> &'static str {
+        match self {
+            TracerSampler::Pixel(kind) => kind.name(),
+            TracerSampler::SobolPairs => "sobol-pairs",
+        }
+    }
+
+    /// How the path-traced scene draws its film offset and lens point.
+    pub fn film_lens(self) -> FilmLens {
+        match self {
+            TracerSampler::Pixel(_) => FilmLens::Joint,
+            TracerSampler::SobolPairs => FilmLens::Pairs,
+        }
+    }
+
+    /// Whether `scene` renders with this sampler: every scene but
+    /// `sobol-pairs`, which differs from `sobol` only in the lens.
+    pub fn renders(self, scene: SceneKind) -> bool {
+        match self {
+            TracerSampler::Pixel(_) => true,
+            TracerSampler::SobolPairs => scene.has_lens(),
+        }
+    }
+
+    /// The pixel sampler for `spp` samples per pixel on a `width x height`
+    /// film at frame `frame`.
+    pub fn build(
+        self,
+        spp: u32,
+        width: u32,
+        height: u32,
+        frame: u32,
+    ) -> Result<AnyPixelSampler, wellspread::Error> {
+        let kind = match self {
+            TracerSampler::Pixel(kind) => kind,
+            TracerSampler::SobolPairs => PixelSamplerKind::Padded(SamplerKind::Sobol),
+        };
+        kind.build(spp, [width, height], frame)
+    }
+}
+
+impl fmt::Display for TracerSampler {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for TracerSampler {
+    type Err = String;
+
+    /// A name from [`TracerSampler::all`], or any name or alias the
+    /// library's [`PixelSamplerKind`] parses (any case, `cmj`, ...).
+    fn from_str(name: &str) -> Result<Self, Self::Err> {
+        if name == TracerSampler::SobolPairs.name() {
+            return Ok(TracerSampler::SobolPairs);
+        }
+        name.parse::<PixelSamplerKind>()
+            .map(TracerSampler::Pixel)
+            .map_err(|_| {
+                let names: Vec<&str> = TracerSampler::all().iter().map(|s| s.name()).collect();
+                format!(
+                    "unknown sampler {name:?}; expected one of: {} (any case; aliases such as cmj)",
+                    names.join(" ")
+                )
+            })
+    }
+}
+
+/// Samples per pixel of a frame: the tracer builds every sampler with a
+/// count, so none is progressive.
+fn spp<P: PixelSampler>(sampler: &P) -> u32 {
+    sampler
+        .samples_per_pixel()
+        .expect("the tracer builds every sampler with a sample count")
+}
+
+/// The dimension pair images use for the film position. Monte Carlo
+/// references use [`REFERENCE_DIMENSION`], a pair no compared image uses,
+/// so a reference is never correlated with what it measures.
+pub const FILM_DIMENSION: u32 = 0;
+/// See [`FILM_DIMENSION`].
+pub const REFERENCE_DIMENSION: u32 = 1;
+
+/// Renders `scene` on its `width x height` film: pixel `(px, py)` takes
+/// samples `0..samples_per_pixel()` of dimension pair `dimension` of
+/// `sampler` as offsets inside the pixel, and `filter` turns them into
+/// pixel values.
+///
+/// Runs on the current rayon pool (`ThreadPool::install` picks another).
+pub fn render<P: PixelSampler>(
+    scene: &Scene,
+    width: u32,
+    height: u32,
+    sampler: &P,
+    dimension: u32,
+    filter: Filter,
+) -> Image {
+    let pixels = match filter {
+        Filter::Box => render_box(scene, width, height, sampler, dimension),
+        _ => render_filtered(scene, width, height, sampler, dimension, filter),
+    };
+    Image {
+        width,
+        height,
+        pixels,
+    }
+}
+
+/// The samples of pixel `(px, py)`, one at a time: each one's film
+/// position (in pixels) and the radiance the scene sends there. The
+/// library's O(1) random access means no per-pixel buffer.
+#[inline]
+fn pixel_samples<'a, P: PixelSampler>(
+    scene: &'a Scene,
+    sampler: &'a P,
+    dimension: u32,
+    px: u32,
+    py: u32,
+) -> impl Iterator<Item = (f64, f64, Rgb)> + 'a {
+    (0..spp(sampler)).map(move |index| {
+        let offset = sampler.sample_pixel([px, py], index, dimension);
+        let x = f64::from(px) + f64::from(offset.x);
+        let y = f64::from(py) + f64::from(offset.y);
+        (x, y, scene.radiance(x, y))
+    })
+}
+
+/// Box filter: every pixel is the plain mean of its own samples, so rows
+/// are independent and each is one rayon task.
+fn render_box<P: PixelSampler>(
+    scene: &Scene,
+    width: u32,
+    height: u32,
+    sampler: &P,
+    dimension: u32,
+) -> Vec<Rgb> {
+    let mut pixels = vec![[0.0; 3]; width as usize * height as usize];
+    pixels
+        .par_chunks_mut(width as usize)
+        .enumerate()
+        .for_each(|(py, row)| {
+            for (pixel, px) in row.iter_mut().zip(0..width) {
+                *pixel = box_pixel(scene, sampler, dimension, px, py as u32);
+            }
+        });
+    pixels
+}
+
+/// One box-filtered pixel: the mean radiance of its samples, summed in f64.
+pub fn box_pixel<P: PixelSampler>(
+    scene: &Scene,
+    sampler: &P,
+    dimension: u32,
+    px: u32,
+    py: u32,
+) -> Rgb {
+    let mut sum = [0.0f64; 3];
+    for (_, _, radiance) in pixel_samples(scene, sampler, dimension, px, py) {
+        for c in 0..3 {
+            sum[c] += f64::from(radiance[c]);
+        }
+    }
+    let inverse_count = 1.0 / f64::from(spp(sampler));
+    sum.map(|s| (s * inverse_count) as f32)
+}
+
+/// Output rows per rayon task for the wide filters. Each band also shades
+/// the `margin` rows above and below it that its filter reaches, so taller
+/// bands waste less; 16 rows still give 16 tasks at 256 pixels high.
+const BAND_ROWS: u32 = 16;
+
+/// Wide filters: a pixel is `sum(w L) / sum(w)` over every sample within
+/// the filter radius of its centre, from any pixel. The film is cut into
+/// horizontal bands; a band shades the sample rows its pixels can see
+/// (its own and `margin` more on each side) and splats each sample into
+/// the band's pixels in a fixed order. Rows near a band edge are shaded
+/// twice, by both bands, which is the price of bands never sharing
+/// writable state.
+fn render_filtered<P: PixelSampler>(
+    scene: &Scene,
+    width: u32,
+    height: u32,
+    sampler: &P,
+    dimension: u32,
+    filter: Filter,
+) -> Vec<Rgb> {
+    let radius = filter.radius();
+    // A sample at y in [sy, sy + 1) reaches pixel rows whose centre
+    // py + 1/2 is within `radius`, which is at most `margin` rows away.
+    let margin = (radius - 0.5).ceil() as i64;
+    let mut pixels = vec![[0.0; 3]; width as usize * height as usize];
+    pixels
+        .par_chunks_mut((BAND_ROWS * width) as usize)
+        .enumerate()
+        .for_each(|(band_index, band)| {
+            let band_rows = (band.len() / width as usize) as i64;
+            let band_y0 = band_index as i64 * i64::from(BAND_ROWS);
+            // Running sums of w * L (three channels) and of w, per pixel.
+            let mut sums = vec![[0.0f64; 4]; band.len()];
+            let first_row = (band_y0 - margin).max(0);
+            let last_row = (band_y0 + band_rows - 1 + margin).min(i64::from(height) - 1);
+            for sy in first_row..=last_row {
+                for sx in 0..width {
+                    for (x, y, radiance) in pixel_samples(scene, sampler, dimension, sx, sy as u32)
+                    {
+                        let radiance = radiance.map(f64::from);
+                        // Pixels whose centre (p + 1/2) is within the radius.
+                        let x_lo = ((x - 0.5 - radius).floor() as i64 + 1).max(0);
+                        let x_hi = ((x - 0.5 + radius).ceil() as i64 - 1).min(i64::from(width) - 1);
+                        let y_lo = ((y - 0.5 - radius).floor() as i64 + 1).max(band_y0);
+                        let y_hi =
+                            ((y - 0.5 + radius).ceil() as i64 - 1).min(band_y0 + band_rows - 1);
+                        for py in y_lo..=y_hi {
+                            let wy = filter.weight_1d(y - (py as f64 + 0.5));
+                            if wy == 0.0 {
+                                continue;
+                            }
+                            let row = ((py - band_y0) * i64::from(width)) as usize;
+                            for px in x_lo..=x_hi {
+                                let w = wy * filter.weight_1d(x - (px as f64 + 0.5));
+                                let sum = &mut sums[row + px as usize];
+                                sum[0] += w * radiance[0];
+                                sum[1] += w * radiance[1];
+                                sum[2] += w * radiance[2];
+                                sum[3] += w;
+                            }
+                        }
+                    }
+                }
+            }
+            for (pixel, sum) in band.iter_mut().zip(&sums) {
+                // Mitchell's negative lobes can, at very low counts, leave a
+                // pixel with no net weight; black is the honest answer.
+                *pixel = if sum[3].abs() > 1e-12 {
+                    [sum[0], sum[1], sum[2]].map(|s| (s / sum[3]) as f32)
+                } else {
+                    [0.0; 3]
+                };
+            }
+        });
+    pixels
+}
+
+/// Rayon pools of one and two threads, for the tests that render a frame
+/// on each and compare the bits.
+#[cfg(test)]
+pub(crate) fn one_and_two_threads() -> (rayon::ThreadPool, rayon::ThreadPool) {
+    let pool = |threads| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+    };
+    (pool(1), pool(2))
+}
+
+/// Every channel of `pixels` as f32 bits, for bit-for-bit comparisons.
+#[cfg(test)]
+pub(crate) fn pixel_bits(pixels: &[Rgb]) -> Vec<u32> {
+    pixels.iter().flatten().map(|v| v.to_bits()).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scenes::SceneKind;
+
+    #[test]
+    fn images_are_bit_identical_for_one_and_two_threads() {
+        let (one, two) = crate::render::one_and_two_threads();
+        // 40 rows make three bands, so the wide filters' band seams are
+        // exercised too.
+        let (width, height) = (24, 40);
+        // The path-traced scene has its own test, in path.rs.
+        for scene_kind in SceneKind::ALL {
+            let Some(scene) = scene_kind.film(width, height) else {
+                continue;
+            };
+            for filter in Filter::ALL {
+                for kind in [
+                    TracerSampler::Pixel(PixelSamplerKind::Padded(
+                        SamplerKind::CorrelatedMultiJittered,
+                    )),
+                    TracerSampler::Pixel(PixelSamplerKind::ZSobol),
+                ] {
+                    let sampler = kind.build(16, width, height, 7).unwrap();
+                    let a = one.install(|| render(&scene, width, height, &sampler, 0, filter));
+                    let b = two.install(|| render(&scene, width, height, &sampler, 0, filter));
+                    assert_eq!(
+                        pixel_bits(&a.pixels),
+                        pixel_bits(&b.pixels),
+                        "{scene_kind} {filter} {kind}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn filters_are_normalised_and_vanish_at_their_radius() {
+        for filter in Filter::ALL {
+            let r = filter.radius();
+            assert_eq!(filter.weight_1d(r), 0.0, "{filter}");
+            // Midpoint rule over the support: each profile integrates to a
+            // positive constant (1 for box and Mitchell).
+            let n = 100_000;
+            let h = 2.0 * r / f64::from(n);
+            let integral: f64 = (0..n)
+                .map(|i| filter.weight_1d(-r + (f64::from(i) + 0.5) * h) * h)
+                .sum();
+            if filter != Filter::Gaussian {
+                assert!((integral - 1.0).abs() < 1e-6, "{filter}: {integral}");
+            } else {
+                assert!(integral > 0.5, "{filter}: {integral}");
+            }
+        }
+    }
+
+    #[test]
+    fn box_render_of_a_constant_region_is_exact() {
+        // Inside the 64 x 64 polygon, every sample sees yellow.
+        let scene = SceneKind::Polygon.film(64, 64).unwrap();
+        let sampler = TracerSampler::Pixel(PixelSamplerKind::Padded(SamplerKind::Random))
+            .build(4, 64, 64, 0)
+            .unwrap();
+        let image = render(&scene, 64, 64, &sampler, FILM_DIMENSION, Filter::Box);
+        assert_eq!(image.pixels[32 * 64 + 20], crate::scenes::Polygon::YELLOW);
+    }
+}
+
+#[cfg(test)]
+mod sampler_tests {
+    use super::*;
+
+    #[test]
+    fn names_round_trip_and_bad_names_are_named() {
+        let all = TracerSampler::all();
+        for kind in &all {
+            assert_eq!(kind.name().parse::<TracerSampler>(), Ok(*kind));
+        }
+        // Every pixel sampler of the library, each once, then sobol-pairs.
+        let pixel: Vec<TracerSampler> = PixelSamplerKind::all().map(TracerSampler::Pixel).collect();
+        assert_eq!(all[..pixel.len()], pixel[..]);
+        assert_eq!(all[pixel.len()..], [TracerSampler::SobolPairs]);
+        // The library's aliases and case.
+        assert_eq!(
+            "CMJ".parse(),
+            Ok(TracerSampler::Pixel(PixelSamplerKind::Padded(
+                SamplerKind::CorrelatedMultiJittered
+            )))
+        );
+        let message = "jitterd".parse::<TracerSampler>().unwrap_err();
+        assert!(message.contains("\"jitterd\""), "{message}");
+        let names: Vec<&str> = all.iter().map(|s| s.name()).collect();
+        assert!(message.contains(&names.join(" ")), "{message}");
+    }
+
+    #[test]
+    fn sobol_pairs_renders_only_where_there_is_a_lens() {
+        for scene in SceneKind::ALL {
+            assert_eq!(TracerSampler::SobolPairs.renders(scene), scene.has_lens());
+            assert!(SOBOL.renders(scene));
+        }
+        assert_eq!(TracerSampler::SobolPairs.film_lens(), FilmLens::Pairs);
+        assert_eq!(SOBOL.film_lens(), FilmLens::Joint);
+        // Both build the same pixel sampler.
+        assert_eq!(
+            TracerSampler::SobolPairs.build(16, 4, 4, 2),
+            SOBOL.build(16, 4, 4, 2)
+        );
+    }
+
+    #[test]
+    fn padded_kinds_use_the_library_adapter() {
+        let sampler = SOBOL.build(4, 8, 8, 3).unwrap();
+        let expected = wellspread::Padded::new(SamplerKind::Sobol.build(4).unwrap(), 3);
+        assert_eq!(
+            sampler.sample_pixel([2, 5], 1, 0),
+            expected.sample_pixel([2, 5], 1, 0)
+        );
+    }
+}

@@ -1,0 +1,457 @@
+//! What a run reports: the measured rows, the markdown trade tables and the
+//! claims they support, the JSON report, and the `--docs` page.
+
+use std::fmt::Write as _;
+use std::fs;
+
+use wellspread::{PixelSamplerKind, SamplerKind};
+
+use crate::cli::Options;
+use crate::render::{SOBOL, TracerSampler};
+use crate::scenes::SceneKind;
+
+/// One measured row: a scene, size, sampler and count, over `frames` frames.
+#[derive(Clone, Debug)]
+pub struct Row {
+    pub scene: SceneKind,
+    pub width: u32,
+    pub height: u32,
+    pub sampler: TracerSampler,
+    pub spp: u32,
+    /// Root-mean-square over the frames of each frame's RMSE.
+    pub rmse: f64,
+    /// The same after the viewing blur ([`blurred_rmse`]).
+    pub blurred_rmse: f64,
+    /// Mean error power below 1/16 cycle per pixel, averaged over the
+    /// frames ([`low_frequency_power`]).
+    pub low_power: f64,
+    /// Fastest time for the first frame.
+    pub seconds: f64,
+    pub frames: u32,
+}
+
+/// The spp and seconds at which a sampler's error first reaches `target`,
+/// interpolating log-log between the two measured counts that bracket it
+/// (error falls roughly as a power of spp and of time). `points` are
+/// `(spp, rmse, seconds)` in increasing spp. `None`: not reached.
+pub fn to_reach(points: &[(u32, f64, f64)], target: f64) -> Option<(f64, f64)> {
+    let (first_spp, first_rmse, first_seconds) = *points.first()?;
+    if first_rmse <= target {
+        return Some((f64::from(first_spp), first_seconds));
+    }
+    points.windows(2).find_map(|pair| {
+        let ((s0, e0, t0), (s1, e1, t1)) = (pair[0], pair[1]);
+        if e0 > target && e1 <= target {
+            let f = (target.ln() - e0.ln()) / (e1.ln() - e0.ln());
+            let lerp_log = |a: f64, b: f64| (a.ln() + f * (b.ln() - a.ln())).exp();
+            Some((lerp_log(f64::from(s0), f64::from(s1)), lerp_log(t0, t1)))
+        } else {
+            None
+        }
+    })
+}
+
+/// An error for a table cell: five decimals, or three significant figures
+/// in scientific notation below 0.001 (the resolved scene at high counts).
+pub fn format_error(value: f64) -> String {
+    if value >= 1e-3 || value == 0.0 {
+        format!("{value:.5}")
+    } else {
+        format!("{value:.2e}")
+    }
+}
+
+/// Milliseconds with three significant figures, for table cells.
+pub fn format_ms(seconds: f64) -> String {
+    let ms = seconds * 1e3;
+    if ms >= 100.0 {
+        format!("{ms:.0} ms")
+    } else if ms >= 10.0 {
+        format!("{ms:.1} ms")
+    } else if ms >= 1.0 {
+        format!("{ms:.2} ms")
+    } else {
+        format!("{ms:.3} ms")
+    }
+}
+
+/// One table per scene and size: RMSE, blurred RMSE and ms per frame at
+/// each spp, then the spp and time needed to reach the target RMSE; then
+/// the claims this run has the evidence for.
+pub fn markdown_tables(options: &Options, rows: &[Row]) -> String {
+    let mut text = String::new();
+    for (scene, width, height) in jobs(rows) {
+        let frames = match options.frames_for(scene) {
+            1 => "one frame".to_owned(),
+            k => format!("RMS over {k} frames"),
+        };
+        let _ = writeln!(
+            text,
+            "\n### {scene} {width}x{height}, {} filter: RMSE / blurred RMSE (ms per frame), {frames}; what reaching RMSE {} costs\n",
+            options.filter, options.target
+        );
+        let spps = options.spps_for(scene);
+        let mut header = String::from("| sampler |");
+        let mut rule = String::from("| --- |");
+        for spp in &spps {
+            let _ = write!(header, " {spp} spp |");
+            rule.push_str(" ---: |");
+        }
+        header.push_str(" spp to reach | time to reach |");
+        rule.push_str(" ---: | ---: |");
+        let _ = writeln!(text, "{header}\n{rule}");
+        for kind in options.samplers_for(scene) {
+            let mine: Vec<&Row> = rows
+                .iter()
+                .filter(|r| (r.scene, r.width, r.height, r.sampler) == (scene, width, height, kind))
+                .collect();
+            let mut line = format!("| {kind} |");
+            for spp in &spps {
+                match mine.iter().find(|r| r.spp == *spp) {
+                    Some(r) => {
+                        let _ = write!(
+                            line,
+                            " {} / {} ({}) |",
+                            format_error(r.rmse),
+                            format_error(r.blurred_rmse),
+                            format_ms(r.seconds)
+                        );
+                    }
+                    None => line.push_str(" skipped |"),
+                }
+            }
+            let points: Vec<_> = mine.iter().map(|r| (r.spp, r.rmse, r.seconds)).collect();
+            match to_reach(&points, options.target) {
+                Some((spp, seconds)) => {
+                    let _ = write!(line, " {spp:.1} | {} |", format_ms(seconds));
+                }
+                None => line.push_str(" not reached | not reached |"),
+            }
+            let _ = writeln!(text, "{line}");
+        }
+    }
+    if let Some(claim) = versus_random(rows) {
+        let _ = writeln!(text, "\n{claim}");
+    }
+    if let Some(table) = zsobol_versus_sobol(rows) {
+        let _ = writeln!(text, "\n{table}");
+    }
+    if let Some(table) = joint_versus_pairs(rows) {
+        let _ = writeln!(text, "\n{table}");
+    }
+    text
+}
+
+/// The (scene, width, height) triples of `rows`, in order of appearance.
+fn jobs(rows: &[Row]) -> Vec<(SceneKind, u32, u32)> {
+    let mut jobs = Vec::new();
+    for r in rows {
+        if !jobs.contains(&(r.scene, r.width, r.height)) {
+            jobs.push((r.scene, r.width, r.height));
+        }
+    }
+    jobs
+}
+
+/// The row of `sampler` matching `r`'s scene, size and count.
+fn partner<'a>(rows: &'a [Row], r: &Row, sampler: TracerSampler) -> Option<&'a Row> {
+    rows.iter().find(|q| {
+        (q.scene, q.width, q.height, q.spp, q.sampler)
+            == (r.scene, r.width, r.height, r.spp, sampler)
+    })
+}
+
+/// From 16 spp up, does every other sampler beat `random` on RMSE at equal
+/// spp? Lists the exceptions rather than hiding them. `None` when the run
+/// has no such comparison (random, or every other sampler, not rendered at
+/// 16 spp or more).
+fn versus_random(rows: &[Row]) -> Option<String> {
+    let random = TracerSampler::Pixel(PixelSamplerKind::Padded(SamplerKind::Random));
+    let compared: Vec<(&Row, &Row)> = rows
+        .iter()
+        .filter(|r| r.spp >= 16 && r.sampler != random)
+        .filter_map(|r| Some((r, partner(rows, r, random)?)))
+        .collect();
+    if compared.is_empty() {
+        return None;
+    }
+    let exceptions: Vec<String> = compared
+        .iter()
+        .filter(|(r, random)| r.rmse >= random.rmse)
+        .map(|(r, random)| {
+            format!(
+                "{} on {} {}x{} at {} spp ({:.5} vs {:.5})",
+                r.sampler, r.scene, r.width, r.height, r.spp, r.rmse, random.rmse
+            )
+        })
+        .collect();
+    Some(if exceptions.is_empty() {
+        format!(
+            "From 16 spp up, every other sampler rendered here has a lower RMSE than `random` \
+             at equal spp ({} comparisons).",
+            compared.len()
+        )
+    } else {
+        format!(
+            "Not below `random` at equal spp (16 spp and up): {}.",
+            exceptions.join("; ")
+        )
+    })
+}
+
+/// Mean of the lowest eighth of the spectrum's bins (frequencies below
+/// 1/16 cycle per pixel): the error a blurred view keeps.
+pub fn low_frequency_power(spectrum: &[f64]) -> f64 {
+    let low = &spectrum[..(spectrum.len() / 8).max(1)];
+    low.iter().sum::<f64>() / low.len() as f64
+}
+
+/// zsobol against sobol, row by row: the ratio of blurred RMSE, of RMSE,
+/// and of low-frequency error power. `None` unless both were rendered.
+fn zsobol_versus_sobol(rows: &[Row]) -> Option<String> {
+    let pairs: Vec<(&Row, &Row)> = rows
+        .iter()
+        .filter(|r| r.sampler == TracerSampler::Pixel(PixelSamplerKind::ZSobol))
+        .filter_map(|r| Some((r, partner(rows, r, SOBOL)?)))
+        .collect();
+    if pairs.is_empty() {
+        return None;
+    }
+    let mut text = String::from(
+        "#### zsobol / sobol\n\n| scene | spp | frames | blurred RMSE ratio | RMSE ratio | low-frequency power ratio |\n| --- | ---: | ---: | ---: | ---: | ---: |\n",
+    );
+    for (z, s) in pairs {
+        // A film too small for a spectrum (the 5 x 7 polygon) has no
+        // low-frequency power: "-" rather than NaN.
+        let low = z.low_power / s.low_power;
+        let low = if low.is_finite() {
+            format!("{low:.3}")
+        } else {
+            "-".to_owned()
+        };
+        let _ = writeln!(
+            text,
+            "| {} {}x{} | {} | {} | {:.3} | {:.3} | {low} |",
+            z.scene,
+            z.width,
+            z.height,
+            z.spp,
+            z.frames,
+            z.blurred_rmse / s.blurred_rmse,
+            z.rmse / s.rmse,
+        );
+    }
+    text += "\n\"-\": the film is too small for an error spectrum.\n";
+    Some(text)
+}
+
+/// Film and lens as one 4D Sobol' draw (`sobol`) against two pairs
+/// (`sobol-pairs`), row by row: the ratio of RMSE, blurred RMSE and time,
+/// below 1 where the 4D draw is better. `None` unless both were rendered.
+fn joint_versus_pairs(rows: &[Row]) -> Option<String> {
+    let pairs: Vec<(&Row, &Row)> = rows
+        .iter()
+        .filter(|r| r.sampler == SOBOL)
+        .filter_map(|r| Some((r, partner(rows, r, TracerSampler::SobolPairs)?)))
+        .collect();
+    if pairs.is_empty() {
+        return None;
+    }
+    let mut text = String::from(
+        "#### Film and lens: one 4D draw (sobol) / two pairs (sobol-pairs)\n\n| scene | spp | frames | RMSE ratio | blurred RMSE ratio | time ratio |\n| --- | ---: | ---: | ---: | ---: | ---: |\n",
+    );
+    for (joint, paired) in pairs {
+        let _ = writeln!(
+            text,
+            "| {} {}x{} | {} | {} | {:.3} | {:.3} | {:.2} |",
+            joint.scene,
+            joint.width,
+            joint.height,
+            joint.spp,
+            joint.frames,
+            joint.rmse / paired.rmse,
+            joint.blurred_rmse / paired.blurred_rmse,
+            joint.seconds / paired.seconds,
+        );
+    }
+    Some(text)
+}
+
+/// The rows as a JSON array.
+pub fn json_report(rows: &[Row]) -> String {
+    let items: Vec<String> = rows
+        .iter()
+        .map(|r| {
+            format!(
+                r#"  {{"scene": "{}", "sampler": "{}", "spp": {}, "rmse": {:e}, "blurred_rmse": {:e}, "low_frequency_power": {}, "seconds": {:e}, "frames": {}, "width": {}, "height": {}}}"#,
+                r.scene,
+                r.sampler.name(),
+                r.spp,
+                r.rmse,
+                r.blurred_rmse,
+                // JSON has no NaN: a film too small for a spectrum is null.
+                if r.low_power.is_finite() {
+                    format!("{:e}", r.low_power)
+                } else {
+                    "null".to_owned()
+                },
+                r.seconds,
+                r.frames,
+                r.width,
+                r.height
+            )
+        })
+        .collect();
+    format!("[\n{}\n]\n", items.join(",\n"))
+}
+
+/// Marks the part of a `--docs` page the tracer owns: on a re-run only the
+/// text between the markers is replaced, so prose around it survives.
+const DOCS_BEGIN: &str = "<!-- tracer: generated from here; edit outside the markers -->";
+const DOCS_END: &str = "<!-- tracer: generated up to here -->";
+
+/// The command that reproduces this run, as a shell line.
+fn command_line() -> String {
+    let mut line = String::from("cargo run --release -p wellspread-lab --example tracer");
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    if !args.is_empty() {
+        line.push_str(" --");
+        for arg in args {
+            let plain = arg
+                .chars()
+                .all(|c| c.is_ascii_alphanumeric() || "-_=,./:".contains(c));
+            if plain {
+                let _ = write!(line, " {arg}");
+            } else {
+                let _ = write!(line, " '{}'", arg.replace('\'', r"'\''"));
+            }
+        }
+    }
+    line
+}
+
+/// The CPU model (from /proc/cpuinfo where there is one), OS and threads.
+fn machine() -> String {
+    let cpu = fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|info| {
+            info.lines().find_map(|l| {
+                l.strip_prefix("model name")
+                    .map(|v| v.trim_start_matches([' ', '\t', ':']).to_owned())
+            })
+        })
+        .unwrap_or_else(|| "unknown CPU".to_owned());
+    format!(
+        "{cpu}, {} {}, {} rayon threads",
+        std::env::consts::OS,
+        std::env::consts::ARCH,
+        rayon::current_num_threads()
+    )
+}
+
+/// The generated block of a `--docs` page.
+fn docs_block(tables: &str) -> String {
+    format!(
+        "{DOCS_BEGIN}\n\nRegenerate with:\n\n```sh\n{}\n```\n\nMachine: {}. Times are the fastest of repeated renders of one frame; other work on the machine inflates them.\n{tables}\n{DOCS_END}\n",
+        command_line(),
+        machine()
+    )
+}
+
+/// The `--docs` page: `existing` with its generated block replaced, or
+/// with the block appended when it has none (a new page when empty).
+pub fn docs_page_from(existing: &str, tables: &str) -> String {
+    let block = docs_block(tables);
+    match (existing.find(DOCS_BEGIN), existing.find(DOCS_END)) {
+        (Some(begin), Some(end)) if end > begin => format!(
+            "{}{block}{}",
+            &existing[..begin],
+            existing[end + DOCS_END.len()..].trim_start_matches('\n')
+        ),
+        _ if existing.trim().is_empty() => format!("# Tracer measurements\n\n{block}"),
+        // A page of prose with no block yet: the block goes at its end.
+        _ => format!("{}\n\n{block}", existing.trim_end()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn row(sampler: TracerSampler, spp: u32, rmse: f64) -> Row {
+        Row {
+            scene: SceneKind::Moire,
+            width: 8,
+            height: 8,
+            sampler,
+            spp,
+            rmse,
+            blurred_rmse: rmse / 2.0,
+            low_power: rmse * rmse,
+            seconds: 0.001,
+            frames: 1,
+        }
+    }
+
+    #[test]
+    fn claims_need_their_evidence() {
+        let sobol = SOBOL;
+        let random = TracerSampler::Pixel(PixelSamplerKind::Padded(SamplerKind::Random));
+        // No random in the run: no claim about random.
+        assert_eq!(versus_random(&[row(sobol, 16, 0.01)]), None);
+        // Random only below 16 spp: no claim either.
+        assert_eq!(
+            versus_random(&[row(sobol, 4, 0.01), row(random, 4, 0.02)]),
+            None
+        );
+        let claim = versus_random(&[row(sobol, 16, 0.01), row(random, 16, 0.02)]).unwrap();
+        assert!(claim.contains("every other sampler"), "{claim}");
+        let claim = versus_random(&[row(sobol, 16, 0.03), row(random, 16, 0.02)]).unwrap();
+        assert!(claim.starts_with("Not below"), "{claim}");
+        // zsobol against sobol only when both ran.
+        assert_eq!(zsobol_versus_sobol(&[row(sobol, 16, 0.01)]), None);
+        let table = zsobol_versus_sobol(&[
+            row(sobol, 16, 0.02),
+            row(TracerSampler::Pixel(PixelSamplerKind::ZSobol), 16, 0.01),
+        ])
+        .unwrap();
+        assert!(table.contains("| 0.500 | 0.500 | 0.250 |"), "{table}");
+        // sobol against sobol-pairs only when both ran.
+        assert_eq!(joint_versus_pairs(&[row(SOBOL, 16, 0.01)]), None);
+        let table = joint_versus_pairs(&[
+            row(SOBOL, 16, 0.01),
+            row(TracerSampler::SobolPairs, 16, 0.02),
+        ])
+        .unwrap();
+        assert!(
+            table.contains("| 16 | 1 | 0.500 | 0.500 | 1.00 |"),
+            "{table}"
+        );
+    }
+
+    #[test]
+    fn docs_pages_keep_the_prose_around_the_generated_block() {
+        let fresh = docs_page_from("", "TABLES");
+        assert!(fresh.starts_with("# Tracer measurements") && fresh.contains("TABLES"));
+        let page =
+            format!("# Mine\n\nprose before\n\n{DOCS_BEGIN}\nold\n{DOCS_END}\n\nprose after\n");
+        let updated = docs_page_from(&page, "NEW");
+        assert!(updated.starts_with("# Mine\n\nprose before\n\n"));
+        assert!(updated.contains("NEW") && !updated.contains("old"));
+        assert!(updated.ends_with("prose after\n"));
+        assert!(updated.contains("cargo run --release -p wellspread-lab --example tracer"));
+        let appended = docs_page_from("# Prose\n\ntext\n", "T");
+        assert!(appended.starts_with("# Prose\n\ntext\n\n") && appended.contains(DOCS_END));
+    }
+
+    #[test]
+    fn to_reach_interpolates_log_log() {
+        // Error halves per 4x spp: RMSE 0.04 at 16, 0.02 at 64; 0.02 * sqrt(2)
+        // lies halfway in log, at 32 spp.
+        let points = [(16, 0.04, 0.1), (64, 0.02, 0.4)];
+        let (spp, seconds) = to_reach(&points, 0.02 * 2f64.sqrt()).unwrap();
+        assert!((spp - 32.0).abs() < 1e-9 && (seconds - 0.2).abs() < 1e-9);
+        assert_eq!(to_reach(&points, 0.05), Some((16.0, 0.1)));
+        assert_eq!(to_reach(&points, 0.01), None);
+    }
+}
