@@ -240,7 +240,7 @@ fn blurred(points: &(dyn Fn(u32, u32, u32, u32, u32) -> Vec2 + Sync)) -> Table {
 /// picked by unrelated hashes, of the first coordinates of the two pairs
 /// at the same pixel and index: 16 x 16 cells over a 64 x 64 film at 16
 /// samples per pixel (255 degrees of freedom; independent pairs stay near
-/// 255). Frames and pairs other than those `tests/blue_noise.rs` checks.
+/// 255). Frames and pairs other than those `tests/pixel/blue_noise.rs` checks.
 fn pair_chi_square(g: &[[u32; 2]; 32]) -> f64 {
     (0..16u32)
         .into_par_iter()

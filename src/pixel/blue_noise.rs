@@ -28,9 +28,9 @@ const DIGITS: u32 = 24;
 /// contribution (x digits, y digits, 24-bit natural order: bit 23 is the
 /// digit of weight 1/2) of bit `j` of the pixel's `x`, entry `2 j + 1`
 /// that of bit `j` of `y`. Entries 0..8 (the 2 x 2 to 16 x 16 levels of
-/// the pixel hierarchy) are the result of
-/// `cargo run --release --example blue_noise_search`, a deterministic
-/// hill-climb on the blurred error under exactly this sampler's
+/// the pixel hierarchy) are the result of `cargo run --release -p
+/// wellspread-lab --example blue_noise_search`, a deterministic hill-climb
+/// on the blurred error under exactly this sampler's
 /// randomisation; the rest are its fixed pseudo-random start, 24 random
 /// digits each (so the coarse levels flip the top digits too, which keeps
 /// the dimension pairs of a pixel independent). `the_columns_are_independent`

@@ -73,9 +73,9 @@ use crate::primitives::{child_key, salt};
 /// integer operations, no hash). Each draw: one
 /// [`mix64`](crate::primitives::mix64) and the sampler's kernel. `branch`
 /// and `split`: one `mix64` and a multiply-add (`split` also the sampler's
-/// `locate`). `cargo bench --bench speed -- domain-ratio` measures `start`
-/// plus draws against a PCG hash making two floats, per back end
-/// (`docs/performance.md`).
+/// `locate`). `cargo bench -p wellspread-lab --bench speed --
+/// domain-ratio` measures `start` plus draws against a PCG hash making
+/// two floats, per back end (`docs/performance.md`).
 ///
 /// # Size
 ///
