@@ -160,7 +160,7 @@ pub use primitives::pattern_seed;
 pub use samplers::{
     AnySampler, BlueMultiJittered, CorrelatedMultiJittered, Halton, Hammersley, Jittered,
     LatinHypercube, MultiJittered, NRooks, OrthogonalArray, OrthogonalArrayOffset, Pmj02, Random,
-    Regular, SamplerKind, Sobol,
+    Regular, SamplerKind, Sobol, Sobol4D,
 };
 pub use traits::{DomainSampler, Sampler2D, SamplerNd, Sequence2D, second_stream, stratified_1d};
 

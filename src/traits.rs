@@ -75,7 +75,8 @@ pub trait Sampler2D {
 /// dimensions()`, with random access to every coordinate: the point sets
 /// whose guarantees span more than two dimensions
 /// ([`LatinHypercube`](crate::LatinHypercube),
-/// [`OrthogonalArray`](crate::OrthogonalArray)).
+/// [`OrthogonalArray`](crate::OrthogonalArray),
+/// [`Sobol4D`](crate::Sobol4D)).
 ///
 /// The contract is [`Sampler2D`]'s, one coordinate at a time: coordinate
 /// `dimension` of sample `index` of pattern `pattern` is a pure function of

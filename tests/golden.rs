@@ -16,7 +16,7 @@
 //! - `domains.txt`: every `PixelSamplerKind`'s draws through a `Domain`
 //!   (1D, 2D, 4D, a branch and a split) for samples `0..4`;
 //! - `primitives.txt`: hashes, permutations, unit conversions, pattern seeds.
-//! - `nd_samplers.txt`: the [`SamplerNd`] point sets (`LatinHypercube`,
+//! - `nd_samplers.txt`: the [`SamplerNd`] point sets (`LatinHypercube`, `Sobol4D`,
 //!   `OrthogonalArray` at every strength and offset) at a few sizes,
 //!   dimension counts and patterns, samples `0..min(n, 8)`, every
 //!   coordinate.
@@ -46,7 +46,7 @@ use wellspread::primitives::{
 };
 use wellspread::{
     LatinHypercube, OrthogonalArray, OrthogonalArrayOffset, PixelSampler, PixelSamplerKind,
-    Sampler2D, SamplerKind, SamplerNd, ZSobol,
+    Sampler2D, SamplerKind, SamplerNd, Sobol4D, ZSobol,
 };
 
 /// The (n, pattern) pairs every sampler is pinned at: n = 1 at both pattern
@@ -250,6 +250,13 @@ fn nd_samplers_text() -> String {
                 );
             }
         }
+    }
+    for pattern in [0, u32::MAX] {
+        write(
+            "sobol-4d 16".to_string(),
+            &Sobol4D::new(16).unwrap(),
+            pattern,
+        );
     }
     text
 }

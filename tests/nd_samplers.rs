@@ -1,10 +1,14 @@
-//! The N-dimensional point sets ([`LatinHypercube`], [`OrthogonalArray`])
-//! through [`SamplerNd`]: range, `sample == coordinate`, and the
+//! The N-dimensional point sets ([`LatinHypercube`], [`OrthogonalArray`],
+//! [`Sobol4D`]) through [`SamplerNd`]: range, `sample == coordinate`, and the
 //! stratification of every projection, checked exactly on the f32 values
 //! over many sizes, dimension counts, offsets and patterns (0 and
 //! `u32::MAX` included).
 
-use wellspread::{Error, LatinHypercube, OrthogonalArray, OrthogonalArrayOffset, SamplerNd};
+use wellspread::glam::Vec2;
+use wellspread::metrics::is_net_base2;
+use wellspread::{
+    Error, LatinHypercube, OrthogonalArray, OrthogonalArrayOffset, SamplerNd, Sobol4D,
+};
 
 const PATTERNS: [u32; 4] = [0, 1, 0xdead_beef, u32::MAX];
 
@@ -419,4 +423,96 @@ fn out_of_range_requests_give_documented_values_in_release_builds() {
             assert!((0.0..1.0).contains(&cube.coordinate(7, pattern, dimension)));
         }
     }
+}
+
+/// Whether the 4D points are a (t,m,4)-net: every elementary box of volume
+/// `2^(t - m)` (sides `2^-d_k`, `d_0 + ... + d_3 = m - t`) holds `2^t`
+/// points.
+fn is_net_4d(points: &[[f32; 4]], t: u32) -> bool {
+    let m = points.len().trailing_zeros();
+    let k = m - t;
+    for d0 in 0..=k {
+        for d1 in 0..=k - d0 {
+            for d2 in 0..=k - d0 - d1 {
+                let d = [d0, d1, d2, k - d0 - d1 - d2];
+                let mut cells = vec![0u32; 1 << k];
+                for p in points {
+                    let mut cell = 0usize;
+                    for (x, bits) in p.iter().zip(d) {
+                        let stratum = (f64::from(*x) * f64::from(1u32 << bits)) as usize;
+                        cell = (cell << bits) | stratum;
+                    }
+                    cells[cell] += 1;
+                }
+                if cells.iter().any(|&c| c != 1 << t) {
+                    return false;
+                }
+            }
+        }
+    }
+    true
+}
+
+/// Points `start..start + n` of `sobol`'s pattern `pattern`, each checked
+/// in `[0, 1)` and against `coordinate`.
+fn sobol_points(sobol: &Sobol4D, pattern: u32, start: u32, n: u32) -> Vec<[f32; 4]> {
+    (start..=start + (n - 1))
+        .map(|index| {
+            let mut p = [f32::NAN; 4];
+            sobol.sample(index, pattern, &mut p);
+            for (dimension, &x) in (0..).zip(&p) {
+                assert!((0.0..1.0).contains(&x), "index {index}: {x}");
+                let alone = sobol.coordinate(index, pattern, dimension);
+                assert_eq!(alone.to_bits(), x.to_bits());
+            }
+            p
+        })
+        .collect()
+}
+
+#[test]
+fn sobol_4d_prefixes_are_3_m_4_nets_with_a_0_2_sequence_in_front() {
+    let sobol = Sobol4D::unbounded();
+    assert_eq!((sobol.len(), sobol.dimensions()), (u32::MAX, 4));
+    for pattern in PATTERNS {
+        for m in 3..=11 {
+            // The prefix 0..2^m and the dyadic block 2^m..2^(m+1): the
+            // index shuffle keeps both as sets.
+            for start in [0, 1 << m] {
+                let points = sobol_points(&sobol, pattern, start, 1 << m);
+                assert!(
+                    is_net_4d(&points, 3),
+                    "pattern {pattern} m {m} from {start}"
+                );
+                let front: Vec<Vec2> = points.iter().map(|p| Vec2::new(p[0], p[1])).collect();
+                assert!(
+                    is_net_base2(&front).unwrap(),
+                    "pattern {pattern} m {m} from {start}"
+                );
+            }
+        }
+        // The last indices are points too.
+        sobol_points(&sobol, pattern, u32::MAX - 63, 64);
+    }
+    // The check has teeth: t = 2 fails at some m (Joe & Kuo's dimensions
+    // give t = 3, not better).
+    assert!((3..=11).any(|m| !is_net_4d(&sobol_points(&sobol, 0, 0, 1 << m), 2)));
+}
+
+#[test]
+fn sobol_4d_patterns_are_independent_and_sizes_are_checked() {
+    assert_eq!(Sobol4D::new(0), Err(Error::ZeroSamples));
+    assert_eq!(Sobol4D::new(16).unwrap().len(), 16);
+    // A set size changes `len` only.
+    let (a, b) = (Sobol4D::new(16).unwrap(), Sobol4D::unbounded());
+    assert_eq!(a.coordinate(1000, 3, 2), b.coordinate(1000, 3, 2));
+    // Different patterns share no value over 256 points.
+    let values = |pattern| -> Vec<u32> {
+        (0..256)
+            .flat_map(|i| (0..4).map(move |d| b.coordinate(i, pattern, d).to_bits()))
+            .collect()
+    };
+    let (p, q) = (values(0), values(1));
+    let shared = p.iter().filter(|v| q.contains(v)).count();
+    assert!(shared < 8, "{shared} shared values");
 }

@@ -481,6 +481,15 @@ fn n_dimensional_sets_write_one_value_per_dimension() {
     assert_eq!(lines_in_group(&svg, "coarse-grid"), 8);
     assert_eq!(lines_in_group(&svg, "fine-grid"), 48);
     assert!(svg.contains("6 dimensions, 3 across and 5 up"), "{svg}");
+    // The 4D Sobol' set at 64 points: a (3,6,4)-net, so every box of
+    // 2 x 2 x 2 in dimensions 1, 2 and 3 holds 8 points.
+    let rows = read_rows(&["--sampler", "sobol-4d", "--n", "64", "--dimensions", "4"]);
+    let mut cells = [0; 8];
+    for row in &rows {
+        assert_eq!(row.len(), 4);
+        cells[stratum(row[1], 2) * 4 + stratum(row[2], 2) * 2 + stratum(row[3], 2)] += 1;
+    }
+    assert_eq!(cells, [8; 8]);
 }
 
 #[test]
@@ -536,7 +545,11 @@ fn n_dimensional_options_are_checked() {
         ),
         (
             &["--sampler", "latin", "--n", "4"],
-            "N-dimensional: latin-hypercube orthogonal",
+            "N-dimensional: latin-hypercube orthogonal sobol-4d",
+        ),
+        (
+            &["--sampler", "sobol-4d", "--n", "4", "--dimensions", "3"],
+            "sobol-4d has 4 dimensions",
         ),
     ];
     for &(args, expected) in cases {

@@ -178,6 +178,10 @@ pub(crate) mod salt {
     /// [`PaddedNd`](crate::PaddedNd) (its dimensions `p D .. (p + 1) D`;
     /// fraction bits of sqrt(31)).
     pub(crate) const PAGE: u64 = 0x9159_015a_3070_dd17;
+    /// Xored into a pattern before the mix that makes a
+    /// [`Sobol4D`](crate::Sobol4D) pattern's stream (fraction bits of
+    /// sqrt(37)).
+    pub(crate) const SOBOL_SET: u64 = 0x152f_ecd8_f70e_5939;
 }
 
 #[cfg(test)]
@@ -200,6 +204,7 @@ mod tests {
             salt::BLUE_NOISE_PIXEL,
             salt::RANDOM_INDEX,
             salt::PAGE,
+            salt::SOBOL_SET,
         ];
         let u32s = [
             salt::ORDER,

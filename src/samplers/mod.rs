@@ -22,4 +22,4 @@ pub use kind::{AnySampler, SamplerKind};
 pub(crate) use kind::{same_name, write_expected_names};
 pub use nd::{LatinHypercube, OrthogonalArray, OrthogonalArrayOffset};
 pub use random::Random;
-pub use sequence::{Halton, Pmj02, Sobol};
+pub use sequence::{Halton, Pmj02, Sobol, Sobol4D};

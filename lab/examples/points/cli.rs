@@ -8,7 +8,7 @@ use std::path::PathBuf;
 use clap::{Parser, ValueEnum};
 use wellspread::{
     AnySampler, LatinHypercube, OrthogonalArray, OrthogonalArrayOffset, Sampler2D, SamplerKind,
-    SamplerNd,
+    SamplerNd, Sobol4D,
 };
 
 #[path = "../shared/cli.rs"]
@@ -29,7 +29,7 @@ pub struct Args {
     #[arg(long, value_name = "P", default_value = "0", value_parser = shared::u32_dec_or_hex)]
     pub pattern: u32,
     /// Coordinates per point: 2 for the 2D samplers; 1 to the set's limit
-    /// for latin-hypercube and orthogonal
+    /// for latin-hypercube and orthogonal, 4 for sobol-4d
     #[arg(long, value_name = "D", default_value = "2", value_parser = shared::whole_number)]
     pub dimensions: u32,
     /// Strength of an orthogonal array: 2, 3 or 4
@@ -71,7 +71,7 @@ N-dimensional set, the --projection pair of dimensions).
 }
 
 /// The N-dimensional sets the tool writes besides the [`SamplerKind`]s.
-pub const ND_NAMES: [&str; 2] = ["latin-hypercube", "orthogonal"];
+pub const ND_NAMES: [&str; 3] = ["latin-hypercube", "orthogonal", "sobol-4d"];
 
 /// What `--sampler` names: a 2D sampler or an N-dimensional set.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -82,6 +82,8 @@ pub enum SamplerName {
     LatinHypercube,
     /// [`OrthogonalArray`].
     Orthogonal,
+    /// [`Sobol4D`].
+    Sobol4D,
 }
 
 /// `--sampler`'s parser: a [`SamplerKind`] name or one of [`ND_NAMES`].
@@ -89,6 +91,7 @@ pub fn sampler_name(name: &str) -> Result<SamplerName, String> {
     match name {
         "latin-hypercube" => Ok(SamplerName::LatinHypercube),
         "orthogonal" => Ok(SamplerName::Orthogonal),
+        "sobol-4d" => Ok(SamplerName::Sobol4D),
         _ => shared::sampler_kind(name)
             .map(SamplerName::Plane)
             .map_err(|e| format!("{e}, or N-dimensional: {}", ND_NAMES.join(" "))),
@@ -136,6 +139,7 @@ pub fn projection(text: &str) -> Result<Projection, String> {
 pub enum NdSet {
     LatinHypercube(LatinHypercube),
     Orthogonal(OrthogonalArray),
+    Sobol4D(Sobol4D),
 }
 
 impl SamplerNd for NdSet {
@@ -143,6 +147,7 @@ impl SamplerNd for NdSet {
         match self {
             NdSet::LatinHypercube(s) => s.len(),
             NdSet::Orthogonal(s) => s.len(),
+            NdSet::Sobol4D(s) => s.len(),
         }
     }
 
@@ -150,6 +155,7 @@ impl SamplerNd for NdSet {
         match self {
             NdSet::LatinHypercube(s) => s.dimensions(),
             NdSet::Orthogonal(s) => s.dimensions(),
+            NdSet::Sobol4D(s) => s.dimensions(),
         }
     }
 
@@ -157,6 +163,7 @@ impl SamplerNd for NdSet {
         match self {
             NdSet::LatinHypercube(s) => s.coordinate(index, pattern, dimension),
             NdSet::Orthogonal(s) => s.coordinate(index, pattern, dimension),
+            NdSet::Sobol4D(s) => s.coordinate(index, pattern, dimension),
         }
     }
 
@@ -164,6 +171,7 @@ impl SamplerNd for NdSet {
         match self {
             NdSet::LatinHypercube(s) => s.sample(index, pattern, out),
             NdSet::Orthogonal(s) => s.sample(index, pattern, out),
+            NdSet::Sobol4D(s) => s.sample(index, pattern, out),
         }
     }
 }
@@ -252,6 +260,16 @@ pub fn parse<I: IntoIterator<Item = OsString>>(
                 })?
                 .with_offset(args.offset.into()),
         )),
+        SamplerName::Sobol4D => {
+            if d != 4 {
+                return Err(Failure::Input(format!(
+                    "--dimensions {d}: sobol-4d has 4 dimensions"
+                )));
+            }
+            PointSet::Nd(NdSet::Sobol4D(
+                Sobol4D::new(n).map_err(|e| Failure::Input(format!("--n {n}: {e}")))?,
+            ))
+        }
     };
     let projection = args.projection.0;
     if let PointSet::Nd(set) = sampler
@@ -333,6 +351,13 @@ pub fn write_points(options: &Options, out: &mut dyn Write) -> io::Result<()> {
                     Strata {
                         coarse: None,
                         rooks: true,
+                    },
+                ),
+                NdSet::Sobol4D(_) => (
+                    "sobol-4d".to_owned(),
+                    Strata {
+                        coarse: None,
+                        rooks: false,
                     },
                 ),
                 NdSet::Orthogonal(array) => (

@@ -19,6 +19,7 @@ pub(crate) mod sobol_4d;
 pub use halton::Halton;
 pub use pmj02::Pmj02;
 pub use sobol::Sobol;
+pub use sobol_4d::Sobol4D;
 
 use glam::Vec2;
 

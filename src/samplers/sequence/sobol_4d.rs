@@ -1,6 +1,7 @@
 //! Sobol' dimensions 2 and 3, so that a pixel sample can draw one point of
 //! a 4D Owen-scrambled Sobol' set (dimensions 0 and 1 are the ones
-//! [`Sobol`](crate::Sobol) uses: the identity and the Pascal matrix).
+//! [`Sobol`](crate::Sobol) uses: the identity and the Pascal matrix), and
+//! that set as a [`SamplerNd`](crate::SamplerNd), [`Sobol4D`].
 //!
 //! # Direction numbers
 //!
@@ -36,6 +37,12 @@
 //! Eight lookups in a 1 KiB table (four index bits each, both dimensions
 //! packed in one u64) and eight xors, instead of a 32-step loop over the
 //! index bits.
+
+use glam::Vec4;
+
+use crate::primitives::{mix64, salt};
+use crate::traits::check_nd_out;
+use crate::{DomainSampler, Error, SamplerNd, Sobol};
 
 /// Degree, coefficient bits `a` and initial `m_1..m_s` of a primitive
 /// polynomial, as Joe & Kuo list them.
@@ -142,6 +149,128 @@ pub(crate) const fn dimensions_2_3_reversed(index: u32) -> (u32, u32) {
         q += 1;
     }
     (v as u32, (v >> 32) as u32)
+}
+
+/// The 4D Owen-scrambled Sobol' sequence as a [`SamplerNd`]: the set a
+/// [`Domain`](crate::Domain)'s `next_4d` draws from for
+/// [`Sobol`](crate::Sobol) and [`Pmj02`](crate::Pmj02), one pattern at a
+/// time.
+///
+/// # Properties
+///
+/// - A sequence, like [`Sobol`](crate::Sobol): every `u32` index is valid,
+///   and every power-of-two prefix `0..2^m`, and every dyadic block
+///   `2^m..2^(m+1)`, is a (3,m,4)-net for `m >= 3`: `2^3` points in every
+///   elementary box of volume `2^(3-m)` (see the module docs for the
+///   derivation). Other aligned blocks are not: the index shuffle mixes
+///   them inside their dyadic block.
+/// - Dimensions (0, 1) are a (0,2)-sequence; (0, 2) and (1, 2) have `t <=
+///   1`, the other 2D projections `t <= 2`.
+/// - Each pattern is an independent Owen scramble of all four dimensions
+///   and an index shuffle inside dyadic blocks
+///   ([`prefix_shuffle`](crate::primitives::prefix_shuffle)), which keeps
+///   every prefix the same set of points.
+/// - Point `index` of pattern `pattern` is
+///   [`DomainSampler::domain_4d`](crate::DomainSampler::domain_4d) of
+///   [`Sobol`](crate::Sobol) at the stream `mix64(pattern ^ salt)`: one
+///   formula for both.
+///
+/// # Cost
+///
+/// One [`mix64`](crate::primitives::mix64), the index shuffle, the four
+/// generator matrices (a 1 KiB table for dimensions 2 and 3) and four Owen
+/// scrambles per point; [`sample`](SamplerNd::sample) computes the point
+/// once, [`coordinate`](SamplerNd::coordinate) once per coordinate.
+///
+/// # Limits
+///
+/// `len()` is only the set size that tools use; a `dimension` of 4 or more
+/// is checked in debug builds and read modulo 4 in release builds. The net
+/// property is exact for prefixes up to 2^24 points (f32's resolution).
+///
+/// # Examples
+///
+/// ```
+/// use wellspread::{SamplerNd, Sobol4D, glam::Vec2, metrics::is_net_base2};
+/// let sobol = Sobol4D::new(64)?;
+/// let points: Vec<[f32; 4]> = (0..64)
+///     .map(|index| {
+///         let mut point = [0.0; 4];
+///         sobol.sample(index, 7, &mut point);
+///         point
+///     })
+///     .collect();
+/// // A (3,6,4)-net: every elementary box of volume 2^-3 holds 8 points,
+/// // here the 2 x 2 x 2 boxes of dimensions 0, 2 and 3.
+/// let mut cells = [0; 8];
+/// for p in &points {
+///     let half = |x: f32| (x * 2.0) as usize;
+///     cells[half(p[0]) * 4 + half(p[2]) * 2 + half(p[3])] += 1;
+/// }
+/// assert_eq!(cells, [8; 8]);
+/// // Dimensions 0 and 1 are a (0,6,2)-net.
+/// let pairs: Vec<Vec2> = points.iter().map(|p| Vec2::new(p[0], p[1])).collect();
+/// assert!(is_net_base2(&pairs)?);
+/// # Ok::<(), wellspread::Error>(())
+/// ```
+///
+/// # References
+///
+/// Joe & Kuo 2008 (direction numbers); Owen 1995 (scrambling); Burley
+/// 2020, "Practical Hash-based Owen Scrambling" (the hash-based scramble
+/// and shuffle).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Sobol4D {
+    n: u32,
+}
+
+impl Sobol4D {
+    /// The sequence with set size `n`.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::ZeroSamples`] for `n = 0`.
+    pub fn new(n: u32) -> Result<Self, Error> {
+        super::set_size(n).map(|n| Self { n })
+    }
+
+    /// The sequence with no set size, `len() == u32::MAX`.
+    #[must_use]
+    pub const fn unbounded() -> Self {
+        Self { n: u32::MAX }
+    }
+
+    /// Point `index` of `pattern`.
+    #[inline]
+    fn point(index: u32, pattern: u32) -> Vec4 {
+        let stream = mix64(u64::from(pattern) ^ salt::SOBOL_SET);
+        Sobol::unbounded().domain_4d(index, stream)
+    }
+}
+
+impl SamplerNd for Sobol4D {
+    #[inline]
+    fn len(&self) -> u32 {
+        self.n
+    }
+
+    #[inline]
+    fn dimensions(&self) -> u32 {
+        4
+    }
+
+    #[inline]
+    fn coordinate(&self, index: u32, pattern: u32, dimension: u32) -> f32 {
+        debug_assert!(dimension < 4, "dimension {dimension} out of range 0..4");
+        Self::point(index, pattern)[dimension as usize % 4]
+    }
+
+    #[inline]
+    #[track_caller]
+    fn sample(&self, index: u32, pattern: u32, out: &mut [f32]) {
+        let out = check_nd_out(out, 4);
+        out.copy_from_slice(&Self::point(index, pattern).to_array());
+    }
 }
 
 #[cfg(test)]
