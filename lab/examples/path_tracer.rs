@@ -8,7 +8,8 @@
 
 use std::error::Error;
 use std::f32::consts::PI;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
 
 use clap::Parser;
 use wellspread::glam::{Vec2, Vec3};
@@ -141,9 +142,18 @@ fn radiance<S: PixelSampler + Copy>(mut root: Domain<S>, pixel: [u32; 2]) -> Vec
     sum
 }
 
-fn main() -> Result<(), Box<dyn Error>> {
+fn main() -> ExitCode {
     let args = Args::parse();
-    let sampler = args.sampler.build(args.spp, SIZE, args.frame)?;
+    let sampler = match args.sampler.build(args.spp, SIZE, args.frame) {
+        Ok(sampler) => sampler,
+        Err(e) => {
+            eprintln!(
+                "path_tracer: --sampler {} --spp {}: {e}",
+                args.sampler, args.spp
+            );
+            return ExitCode::from(2);
+        }
+    };
     let mut bytes = Vec::with_capacity((SIZE[0] * SIZE[1] * 3) as usize);
     // Gamma 2.2, clamped to 8 bits.
     let encode = |c: f32| (255.0 * c.max(0.0).powf(1.0 / 2.2)).min(255.0) as u8;
@@ -155,15 +165,28 @@ fn main() -> Result<(), Box<dyn Error>> {
             bytes.extend((sum / args.spp as f32).to_array().map(encode));
         }
     }
-    if let Some(folder) = args.out.parent() {
+    match write_png(&args.out, &bytes) {
+        Ok(()) => {
+            println!("{}", args.out.display());
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("path_tracer: {}: {e}", args.out.display());
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// Writes the RGB `bytes` as a PNG at `path`, making its folder if missing.
+fn write_png(path: &Path, bytes: &[u8]) -> Result<(), Box<dyn Error>> {
+    if let Some(folder) = path.parent() {
         std::fs::create_dir_all(folder)?;
     }
-    let file = std::io::BufWriter::new(std::fs::File::create(&args.out)?);
+    let file = std::io::BufWriter::new(std::fs::File::create(path)?);
     let mut encoder = png::Encoder::new(file, SIZE[0], SIZE[1]);
     encoder.set_color(png::ColorType::Rgb);
     let mut writer = encoder.write_header()?;
-    writer.write_image_data(&bytes)?;
+    writer.write_image_data(bytes)?;
     writer.finish()?;
-    println!("{}", args.out.display());
     Ok(())
 }
