@@ -15,7 +15,7 @@ use crate::shared::{self, Failure};
 /// What the tracer writes and how it exits; shown under `--help`.
 const HELP: &str = "\
 Output, under --out (default out/), per scene as <scene>-<W>x<H>-<filter>/
-(<scene>-<W>x<H>-<filter>-importance/ for --filter-mode importance):
+(<scene>-<W>x<H>-<filter>-<mode>/ for the sampled --filter-mode values):
   reference.png              the reference image every RMSE is measured
                              against: what infinitely many samples would give
                              under the same filter (exact or quadrature where
@@ -81,8 +81,9 @@ pub struct Cli {
     #[arg(long = "filter", value_name = "LIST", value_delimiter = ',', value_parser = parse_filter)]
     filters: Vec<Filter>,
     /// Comma-separated filter modes: weighted (box samples splatted with
-    /// the filter's weight), importance (samples drawn from the filter)
-    /// [default: weighted]
+    /// the filter's weight), importance (samples drawn from the filter,
+    /// pbrt-v4's sum(w L) / sum(w)), importance-mean (the same samples,
+    /// sum(w L) / n) [default: weighted]
     #[arg(long = "filter-mode", value_name = "LIST", value_delimiter = ',', value_parser = parse_filter_mode)]
     modes: Vec<FilterMode>,
     /// First frame (what a renderer passes per frame: the `frame` of
@@ -488,12 +489,16 @@ pub(crate) mod tests {
             "--filter",
             "box,tent,gaussian,mitchell,lanczos,blackman-harris,tent",
             "--filter-mode",
-            "importance,weighted",
+            "importance,weighted,importance-mean",
         ]);
         assert_eq!(options.filters, Filter::ALL);
         assert_eq!(
             options.modes,
-            [FilterMode::Importance, FilterMode::Weighted]
+            [
+                FilterMode::Importance,
+                FilterMode::Weighted,
+                FilterMode::ImportanceMean
+            ]
         );
         for filter in Filter::ALL {
             assert_eq!(filter.name().parse(), Ok(filter));

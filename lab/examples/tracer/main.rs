@@ -338,7 +338,7 @@ impl<'a> SceneJob<'a> {
     ) -> Result<Self, Failure> {
         let label = match mode {
             FilterMode::Weighted => format!("{kind}-{width}x{height}-{filter}"),
-            FilterMode::Importance => format!("{kind}-{width}x{height}-{filter}-{mode}"),
+            _ => format!("{kind}-{width}x{height}-{filter}-{mode}"),
         };
         let dir = options.out.join(&label);
         fs::create_dir_all(&dir).map_err(|e| write_error(&dir, e))?;

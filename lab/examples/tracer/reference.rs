@@ -158,7 +158,7 @@ fn polygon_exact(polygon: &Polygon, width: u32, height: u32) -> Image {
 /// Nodes and weights of `N`-point Gauss-Legendre quadrature on `[-1, 1]`,
 /// by Newton's method on the Legendre polynomial (three-term recurrence)
 /// from the Chebyshev-like first guess `cos(pi (i + 3/4) / (N + 1/2))`.
-fn gauss_legendre<const N: usize>() -> ([f64; N], [f64; N]) {
+pub fn gauss_legendre<const N: usize>() -> ([f64; N], [f64; N]) {
     let mut nodes = [0.0; N];
     let mut weights = [0.0; N];
     let n = N as f64;

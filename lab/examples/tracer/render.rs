@@ -162,15 +162,24 @@ pub enum FilterMode {
     /// through the library's `Filter::sample` to `centre + offset`, and
     /// the pixel is pbrt-v4's `sum(w L) / sum(w)` with `w = f / pdf`.
     Importance,
+    /// The same samples, the unbiased mean instead of the ratio:
+    /// `sum(w L) / (n m)`, `m` the filter's mass inside the film (1 away
+    /// from the border). No division by a sum of signed weights.
+    ImportanceMean,
 }
 
 impl FilterMode {
-    pub const ALL: [FilterMode; 2] = [FilterMode::Weighted, FilterMode::Importance];
+    pub const ALL: [FilterMode; 3] = [
+        FilterMode::Weighted,
+        FilterMode::Importance,
+        FilterMode::ImportanceMean,
+    ];
 
     pub fn name(self) -> &'static str {
         match self {
             FilterMode::Weighted => "weighted",
             FilterMode::Importance => "importance",
+            FilterMode::ImportanceMean => "importance-mean",
         }
     }
 }
@@ -189,7 +198,9 @@ impl FromStr for FilterMode {
             .into_iter()
             .find(|mode| mode.name() == name)
             .ok_or_else(|| {
-                format!("unknown filter mode {name:?}; expected one of: weighted importance")
+                format!(
+                    "unknown filter mode {name:?}; expected one of: weighted importance importance-mean"
+                )
             })
     }
 }
@@ -345,8 +356,8 @@ pub fn render<P: PixelSampler>(
     mode: FilterMode,
 ) -> Image {
     let pixels = match (filter, mode) {
-        (_, FilterMode::Importance) => {
-            render_importance(scene, width, height, sampler, dimension, filter)
+        (_, FilterMode::Importance | FilterMode::ImportanceMean) => {
+            render_importance(scene, width, height, sampler, dimension, filter, mode)
         }
         (Filter::Box, FilterMode::Weighted) => render_box(scene, width, height, sampler, dimension),
         (_, FilterMode::Weighted) => {
@@ -426,7 +437,8 @@ pub fn box_pixel<P: PixelSampler>(
 /// `GetPixelRGB` divides). Samples that land off the film are dropped, so
 /// border pixels normalise over the film like the weighted mode and the
 /// references do. Each pixel reads only its own samples: rows are
-/// independent rayon tasks.
+/// independent rayon tasks. [`FilterMode::ImportanceMean`] divides by
+/// `n` times the filter's mass on the film instead.
 fn render_importance<P: PixelSampler>(
     scene: &Scene,
     width: u32,
@@ -434,6 +446,7 @@ fn render_importance<P: PixelSampler>(
     sampler: &P,
     dimension: u32,
     filter: Filter,
+    mode: FilterMode,
 ) -> Vec<Rgb> {
     let mut pixels = vec![[0.0; 3]; width as usize * height as usize];
     pixels
@@ -441,7 +454,11 @@ fn render_importance<P: PixelSampler>(
         .enumerate()
         .for_each(|(py, row)| {
             for (pixel, px) in row.iter_mut().zip(0..width) {
-                *pixel = importance_pixel(
+                let estimate = match mode {
+                    FilterMode::ImportanceMean => importance_mean_pixel,
+                    _ => importance_pixel,
+                };
+                *pixel = estimate(
                     scene, width, height, sampler, dimension, filter, px, py as u32,
                 );
             }
@@ -485,6 +502,70 @@ pub fn importance_pixel<P: PixelSampler>(
     } else {
         [0.0; 3]
     }
+}
+
+/// One pixel of [`FilterMode::ImportanceMean`]: `sum(w L) / (n m)` in
+/// f64, with `m` the mass of the (normalised) filter inside the film,
+/// `m_x m_y`, each the 1D profile's integral over the part of the support
+/// on the film (8-point Gauss-Legendre per piece between the breaks).
+/// Off-film samples add nothing, and `E[w 1(on film)] = m`, so the
+/// estimate is unbiased for the clipped, renormalised filter the
+/// references use.
+#[allow(clippy::too_many_arguments)]
+pub fn importance_mean_pixel<P: PixelSampler>(
+    scene: &Scene,
+    width: u32,
+    height: u32,
+    sampler: &P,
+    dimension: u32,
+    filter: Filter,
+    px: u32,
+    py: u32,
+) -> Rgb {
+    let library = filter.library();
+    let mut sum = [0.0f64; 3];
+    for index in 0..spp(sampler) {
+        let u = sampler.sample_pixel([px, py], index, dimension);
+        let s = library.sample(u);
+        let x = f64::from(px) + 0.5 + f64::from(s.offset.x);
+        let y = f64::from(py) + 0.5 + f64::from(s.offset.y);
+        if !(0.0..f64::from(width)).contains(&x) || !(0.0..f64::from(height)).contains(&y) {
+            continue;
+        }
+        let w = f64::from(s.weight);
+        let radiance = scene.radiance(x, y);
+        for c in 0..3 {
+            sum[c] += w * f64::from(radiance[c]);
+        }
+    }
+    let mass = film_mass(filter, f64::from(px) + 0.5, f64::from(width))
+        * film_mass(filter, f64::from(py) + 0.5, f64::from(height));
+    let scale = 1.0 / (f64::from(spp(sampler)) * mass);
+    sum.map(|s| (s * scale) as f32)
+}
+
+/// The integral of `filter`'s normalised 1D profile centred at `centre`
+/// over `[0, limit]`: 1 when the support is inside.
+fn film_mass(filter: Filter, centre: f64, limit: f64) -> f64 {
+    let r = filter.radius();
+    if centre - r >= 0.0 && centre + r <= limit {
+        return 1.0;
+    }
+    let (nodes, weights) = crate::reference::gauss_legendre::<8>();
+    filter
+        .breaks()
+        .windows(2)
+        .map(|pair| ((centre + pair[0]).max(0.0), (centre + pair[1]).min(limit)))
+        .filter(|(a, b)| b > a)
+        .map(|(a, b)| {
+            let half = 0.5 * (b - a);
+            nodes
+                .iter()
+                .zip(&weights)
+                .map(|(t, w)| w * half * filter.weight_1d(a + (t + 1.0) * half - centre))
+                .sum::<f64>()
+        })
+        .sum()
 }
 
 /// Output rows per rayon task for the wide filters. Each band also shades
@@ -689,6 +770,52 @@ mod tests {
                 assert_eq!(pixel, crate::scenes::Polygon::YELLOW, "{filter} {kind}");
             }
         }
+    }
+
+    #[test]
+    fn importance_mean_is_exact_where_weights_are_one_and_unbiased_elsewhere() {
+        // Box, tent and Gaussian have weight exactly 1: sum(L) / n is
+        // exact on a constant region. Mitchell and Lanczos carry signed
+        // weights, so the mean fluctuates about the value, and over many
+        // frames it averages to it.
+        let scene = SceneKind::Polygon.film(64, 64).unwrap();
+        let yellow = crate::scenes::Polygon::YELLOW;
+        let kind = TracerSampler::Pixel(PixelSamplerKind::Padded(SamplerKind::Random));
+        for filter in [Filter::Box, Filter::Tent, Filter::Gaussian] {
+            let sampler = kind.build(16, 64, 64, 3).unwrap();
+            let pixel =
+                importance_mean_pixel(&scene, 64, 64, &sampler, FILM_DIMENSION, filter, 20, 32);
+            assert_eq!(pixel, yellow, "{filter}");
+        }
+        for filter in [Filter::Mitchell, Filter::Lanczos] {
+            let frames = 400;
+            let mean: f64 = (0..frames)
+                .map(|frame| {
+                    let sampler = kind.build(16, 64, 64, frame).unwrap();
+                    let pixel = importance_mean_pixel(
+                        &scene,
+                        64,
+                        64,
+                        &sampler,
+                        FILM_DIMENSION,
+                        filter,
+                        20,
+                        32,
+                    );
+                    f64::from(pixel[0])
+                })
+                .sum::<f64>()
+                / f64::from(frames);
+            // 6400 samples of weight +-c (c < 1.4): a standard error
+            // under 0.02; 0.1 is five of them.
+            assert!(
+                (mean - f64::from(yellow[0])).abs() < 0.1,
+                "{filter}: {mean}"
+            );
+        }
+        // The clipped mass: half a tent at the film's edge, all inside.
+        assert!((film_mass(Filter::Tent, 0.0, 64.0) - 0.5).abs() < 1e-12);
+        assert_eq!(film_mass(Filter::Lanczos, 32.0, 64.0), 1.0);
     }
 
     #[test]

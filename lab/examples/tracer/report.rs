@@ -153,12 +153,21 @@ pub fn markdown_tables(options: &Options, rows: &[Row]) -> String {
 
 /// The run of several filters or modes: one table per scene and size,
 /// a line per filter and sampler, RMSE / blurred RMSE per count and mode
-/// side by side, then (with both modes) the geometric mean over the counts
-/// of importance RMSE over weighted RMSE.
+/// side by side; then, for each sampled mode run beside `weighted`, the
+/// geometric mean over the counts of its RMSE over weighted's; then ms
+/// per frame at the largest count, per mode.
 fn filter_tables(options: &Options, rows: &[Row]) -> String {
     let mut text = String::new();
-    let both = options.modes.contains(&FilterMode::Weighted)
-        && options.modes.contains(&FilterMode::Importance);
+    let compared: Vec<FilterMode> = if options.modes.contains(&FilterMode::Weighted) {
+        options
+            .modes
+            .iter()
+            .copied()
+            .filter(|&m| m != FilterMode::Weighted)
+            .collect()
+    } else {
+        Vec::new()
+    };
     for (scene, width, height) in jobs(rows) {
         let frames = match options.frames_for(scene) {
             1 => "one frame".to_owned(),
@@ -169,6 +178,7 @@ fn filter_tables(options: &Options, rows: &[Row]) -> String {
             "\n### {scene} {width}x{height}: RMSE / blurred RMSE per filter and mode, {frames}\n"
         );
         let spps = options.spps_for(scene);
+        let largest = spps.last().copied().unwrap_or(1);
         let mut header = String::from("| filter | sampler |");
         let mut rule = String::from("| --- | --- |");
         for spp in &spps {
@@ -177,8 +187,12 @@ fn filter_tables(options: &Options, rows: &[Row]) -> String {
                 rule.push_str(" ---: |");
             }
         }
-        if both {
-            header.push_str(" importance / weighted RMSE |");
+        for mode in &compared {
+            let _ = write!(header, " {mode} / weighted RMSE |");
+            rule.push_str(" ---: |");
+        }
+        for mode in &options.modes {
+            let _ = write!(header, " ms at {largest} spp {mode} |");
             rule.push_str(" ---: |");
         }
         let _ = writeln!(text, "{header}\n{rule}");
@@ -196,7 +210,6 @@ fn filter_tables(options: &Options, rows: &[Row]) -> String {
                 } else {
                     format!("| {filter} | {kind} |")
                 };
-                let mut log_ratio = (0.0, 0u32);
                 for &spp in &spps {
                     for &mode in &options.modes {
                         match find(spp, mode) {
@@ -211,22 +224,28 @@ fn filter_tables(options: &Options, rows: &[Row]) -> String {
                             None => line.push_str(" skipped |"),
                         }
                     }
-                    if let (Some(w), Some(i)) = (
-                        find(spp, FilterMode::Weighted),
-                        find(spp, FilterMode::Importance),
-                    ) && w.rmse > 0.0
-                        && i.rmse > 0.0
-                    {
-                        log_ratio.0 += (i.rmse / w.rmse).ln();
-                        log_ratio.1 += 1;
+                }
+                for &mode in &compared {
+                    let logs: Vec<f64> = spps
+                        .iter()
+                        .filter_map(|&spp| {
+                            let (w, i) = (find(spp, FilterMode::Weighted)?, find(spp, mode)?);
+                            (w.rmse > 0.0 && i.rmse > 0.0).then(|| (i.rmse / w.rmse).ln())
+                        })
+                        .collect();
+                    if logs.is_empty() {
+                        line.push_str(" - |");
+                    } else {
+                        let ratio = (logs.iter().sum::<f64>() / logs.len() as f64).exp();
+                        let _ = write!(line, " {ratio:.3} |");
                     }
                 }
-                if both {
-                    if log_ratio.1 > 0 {
-                        let ratio = (log_ratio.0 / f64::from(log_ratio.1)).exp();
-                        let _ = write!(line, " {ratio:.2} |");
-                    } else {
-                        line.push_str(" - |");
+                for &mode in &options.modes {
+                    match find(largest, mode) {
+                        Some(r) => {
+                            let _ = write!(line, " {} |", format_ms(r.seconds));
+                        }
+                        None => line.push_str(" - |"),
                     }
                 }
                 let _ = writeln!(text, "{line}");
