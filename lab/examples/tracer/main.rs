@@ -449,6 +449,14 @@ impl<'a> SceneJob<'a> {
             spp,
             filter: self.filter,
             mode: self.mode,
+            reference_range: self
+                .reference
+                .pixels
+                .iter()
+                .flatten()
+                .fold([f64::INFINITY, f64::NEG_INFINITY], |[low, high], &v| {
+                    [low.min(f64::from(v)), high.max(f64::from(v))]
+                }),
             rmse: (squares.0 / count).sqrt(),
             blurred_rmse: (squares.1 / count).sqrt(),
             low_power: low_frequency_power(&spectrum),

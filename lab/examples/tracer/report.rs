@@ -20,6 +20,10 @@ pub struct Row {
     pub spp: u32,
     pub filter: Filter,
     pub mode: FilterMode,
+    /// The reference's least and greatest value over every pixel and
+    /// channel: a filter with negative lobes overshoots the scene's range
+    /// at edges (ringing).
+    pub reference_range: [f64; 2],
     /// Root-mean-square over the frames of each frame's RMSE.
     pub rmse: f64,
     /// The same after the viewing blur ([`blurred_rmse`]).
@@ -251,6 +255,23 @@ fn filter_tables(options: &Options, rows: &[Row]) -> String {
                 let _ = writeln!(text, "{line}");
             }
         }
+        // Ringing: how far each filter's reference leaves the scene's own
+        // range, which the box reference (an average) cannot leave.
+        let mut ranges = Vec::new();
+        for &filter in &options.filters {
+            if let Some(r) = rows
+                .iter()
+                .find(|r| (r.scene, r.width, r.height, r.filter) == (scene, width, height, filter))
+            {
+                let [low, high] = r.reference_range;
+                ranges.push(format!("{filter} [{low:.4}, {high:.4}]"));
+            }
+        }
+        let _ = writeln!(
+            text,
+            "\nReference range (least and greatest pixel value): {}.",
+            ranges.join(", ")
+        );
     }
     text
 }
@@ -502,6 +523,7 @@ mod tests {
             spp,
             filter: Filter::Box,
             mode: FilterMode::Weighted,
+            reference_range: [0.0, 1.0],
             rmse,
             blurred_rmse: rmse / 2.0,
             low_power: rmse * rmse,
