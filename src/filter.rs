@@ -110,6 +110,21 @@ pub trait Filter {
     /// outside it).
     fn evaluate(&self, p: Vec2) -> f32;
 
+    /// The 1D profile `f1(x)` in f64, normalised to integrate to 1 over
+    /// `[-radius, radius]` (0 outside it): `evaluate(p)` is `f1(p.x)
+    /// f1(p.y)`. For a renderer that weights box-distributed samples by
+    /// the filter instead of sampling it.
+    ///
+    /// ```
+    /// use wellspread::filter::{Filter, TentFilter};
+    /// let tent = TentFilter::new(1.0)?;
+    /// assert_eq!(tent.evaluate_1d(0.0), 1.0);
+    /// assert_eq!(tent.evaluate_1d(0.5), 0.5);
+    /// assert_eq!(tent.evaluate_1d(-1.5), 0.0);
+    /// # Ok::<(), wellspread::Error>(())
+    /// ```
+    fn evaluate_1d(&self, x: f64) -> f64;
+
     /// The offset drawn from `|f|` by the monotone map of `u` (each axis
     /// by its own inverse CDF), and its weight. Input outside `[0, 1)^2` is
     /// clamped into it (NaN to 0).
@@ -161,6 +176,10 @@ macro_rules! separable {
             #[inline]
             fn evaluate(&self, p: Vec2) -> f32 {
                 (self.eval_1d(f64::from(p.x)) * self.eval_1d(f64::from(p.y))) as f32
+            }
+            #[inline]
+            fn evaluate_1d(&self, x: f64) -> f64 {
+                self.eval_1d(x)
             }
             #[inline]
             fn sample(&self, u: Vec2) -> FilterSample {

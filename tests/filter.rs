@@ -504,3 +504,31 @@ fn tabulated_filters_fit_in_4_kib() {
     }
     assert!(size_of::<GaussianFilter>() <= 32 && size_of::<BoxFilter>() <= 8);
 }
+
+/// `evaluate_1d` is the normalised profile of the test's own formula
+/// (`f1 / integral of f1`), and `evaluate` is its product over the axes.
+#[test]
+fn evaluate_1d_is_the_normalised_profile() {
+    for case in cases() {
+        let r = case.radius;
+        for i in 0..=64 {
+            let x = -r + 2.0 * r * f64::from(i) / 64.0;
+            let expected = (case.cdf.f)(x) / case.cdf.total;
+            let got = case.filter.evaluate_1d(x);
+            assert!(
+                (got - expected).abs() <= 1e-6 * expected.abs().max(1.0),
+                "{} at {x}: {got} vs {expected}",
+                case.name
+            );
+            let y = 0.3 * r;
+            let product = (got * case.filter.evaluate_1d(y)) as f32;
+            let p = Vec2::new(x as f32, y as f32);
+            assert!(
+                (case.filter.evaluate(p) - product).abs() <= 1e-5 * product.abs().max(1.0),
+                "{} at {p}",
+                case.name
+            );
+        }
+        assert_eq!(case.filter.evaluate_1d(r * 1.01), 0.0, "{}", case.name);
+    }
+}

@@ -27,6 +27,7 @@ fn every_relative_link_in_the_readme_and_docs_exists() {
         "docs/performance.md",
         "docs/metrics.md",
         "docs/zsobol.md",
+        "docs/filters.md",
         "docs/blue_noise.md",
         "docs/warps.md",
         "docs/gpu.md",
@@ -67,6 +68,10 @@ fn docs_pages_start_with_their_regeneration_command_and_machine() {
         (
             "docs/zsobol.md",
             "cargo run --release -p wellspread-lab --example tracer --",
+        ),
+        (
+            "docs/filters.md",
+            "cargo run --release -p wellspread-lab --example tracer -- --scene checker,moire",
         ),
         (
             "docs/blue_noise.md",

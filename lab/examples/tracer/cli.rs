@@ -8,13 +8,14 @@ use std::path::PathBuf;
 
 use clap::Parser;
 
-use crate::render::{Filter, TracerSampler};
+use crate::render::{Filter, FilterMode, TracerSampler};
 use crate::scenes::{Built, SceneKind};
 use crate::shared::{self, Failure};
 
 /// What the tracer writes and how it exits; shown under `--help`.
 const HELP: &str = "\
-Output, under --out (default out/), per scene as <scene>-<W>x<H>-<filter>/:
+Output, under --out (default out/), per scene as <scene>-<W>x<H>-<filter>/
+(<scene>-<W>x<H>-<filter>-<mode>/ for the sampled --filter-mode values):
   reference.png              the reference image every RMSE is measured
                              against: what infinitely many samples would give
                              under the same filter (exact or quadrature where
@@ -31,9 +32,13 @@ Output, under --out (default out/), per scene as <scene>-<W>x<H>-<filter>/:
                              image (frame - reference), one line per sampler,
                              low frequencies on the left, averaged over frames
   trade.svg                  RMSE against seconds per frame, log-log
+With more than one filter or filter mode, one table compares them (RMSE /
+blurred RMSE per sampler and filter, each mode side by side), and
+filters-<scene>-<W>x<H>-<spp>spp.png under --out is a contact sheet of
+the first sampler's crop: one row per filter, the reference then each mode.
 The markdown tables go to stdout; --report writes the rows as JSON
-(scene, sampler, spp, rmse, blurred_rmse, low_frequency_power, seconds,
-frames, width, height) and --docs the tables as a markdown page headed by the
+(scene, filter, filter_mode, sampler, spp, rmse, blurred_rmse,
+low_frequency_power, seconds, frames, width, height) and --docs the tables as a markdown page headed by the
 command and machine (on a page that has them, only the text between the
 tracer's markers is replaced).
 With --frames K (default 1, 4 for cornell, whose path-traced error is
@@ -71,9 +76,16 @@ pub struct Cli {
     /// 128x128 for cornell]
     #[arg(long, value_name = "N|WxH", value_parser = parse_size)]
     size: Option<(u32, u32)>,
-    /// Reconstruction filter: box, gaussian, mitchell
-    #[arg(long, value_name = "NAME", default_value = "box", value_parser = parse_filter)]
-    filter: Filter,
+    /// Comma-separated reconstruction filters: box, tent, gaussian,
+    /// mitchell, lanczos, blackman-harris [default: box]
+    #[arg(long = "filter", value_name = "LIST", value_delimiter = ',', value_parser = parse_filter)]
+    filters: Vec<Filter>,
+    /// Comma-separated filter modes: weighted (box samples splatted with
+    /// the filter's weight), importance (samples drawn from the filter,
+    /// pbrt-v4's sum(w L) / sum(w)), importance-mean (the same samples,
+    /// sum(w L) / n) [default: weighted]
+    #[arg(long = "filter-mode", value_name = "LIST", value_delimiter = ',', value_parser = parse_filter_mode)]
+    modes: Vec<FilterMode>,
     /// First frame (what a renderer passes per frame: the `frame` of
     /// pattern_seed, Padded, ZSobol and BlueNoise), 0 to 4294967295
     #[arg(long, alias = "seed", value_name = "N", default_value = "0", value_parser = shared::whole_number)]
@@ -106,7 +118,10 @@ pub struct Options {
     /// The counts `--spp` asked for, ascending; `None`: each scene's own.
     pub spps: Option<Vec<u32>>,
     pub size: Option<(u32, u32)>,
-    pub filter: Filter,
+    /// The filters, in the order given.
+    pub filters: Vec<Filter>,
+    /// The filter modes, in the order given.
+    pub modes: Vec<FilterMode>,
     pub frame: u32,
     /// The `--frames` asked for; `None`: each scene's own.
     pub frames: Option<u32>,
@@ -140,17 +155,29 @@ impl Options {
         // The path tracer has no wide filters: a run of every scene leaves
         // it out, and asking for it is an error.
         let path_traced = |scene: &SceneKind| matches!(scene.build(1, 1), Built::PathTraced);
-        if cli.filter != Filter::Box
-            && let Some(scene) = cli.scenes.iter().find(|s| path_traced(s))
-        {
+        let filters = if cli.filters.is_empty() {
+            vec![Filter::Box]
+        } else {
+            dedup(cli.filters)
+        };
+        let modes = if cli.modes.is_empty() {
+            vec![FilterMode::Weighted]
+        } else {
+            dedup(cli.modes)
+        };
+        let box_only = filters == [Filter::Box] && modes == [FilterMode::Weighted];
+        if !box_only && let Some(scene) = cli.scenes.iter().find(|s| path_traced(s)) {
+            let names: Vec<&str> = filters.iter().map(|f| f.name()).collect();
+            let mode_names: Vec<&str> = modes.iter().map(|m| m.name()).collect();
             return Err(Failure::Input(format!(
-                "--scene {scene} renders with the box filter only, not --filter {}",
-                cli.filter
+                "--scene {scene} renders with the box filter, weighted, only, not --filter {} --filter-mode {}",
+                names.join(","),
+                mode_names.join(",")
             )));
         }
         let all_scenes: Vec<SceneKind> = SceneKind::ALL
             .into_iter()
-            .filter(|scene| cli.filter == Filter::Box || !path_traced(scene))
+            .filter(|scene| box_only || !path_traced(scene))
             .collect();
         let spps = (!cli.spps.is_empty()).then(|| {
             let mut spps = dedup(cli.spps);
@@ -182,7 +209,8 @@ impl Options {
             samplers: or_all(cli.samplers, TracerSampler::all()),
             spps,
             size: cli.size,
-            filter: cli.filter,
+            filters,
+            modes,
             frame: cli.frame,
             frames: cli.frames,
             target: cli.target,
@@ -259,6 +287,10 @@ fn parse_sampler(text: &str) -> Result<TracerSampler, String> {
 }
 
 fn parse_filter(text: &str) -> Result<Filter, String> {
+    text.parse()
+}
+
+fn parse_filter_mode(text: &str) -> Result<FilterMode, String> {
     text.parse()
 }
 
@@ -347,7 +379,8 @@ pub(crate) mod tests {
             assert_eq!(options.spps_for(scene), scene.default_spps());
             assert_eq!(options.sizes_for(scene), scene.default_sizes());
         }
-        assert_eq!(options.filter, Filter::Box);
+        assert_eq!(options.filters, [Filter::Box]);
+        assert_eq!(options.modes, [FilterMode::Weighted]);
         assert_eq!((options.frame, options.frames), (0, None));
         assert_eq!(options.frame_range(SceneKind::Moire), 0..=0);
         assert_eq!(options.frame_range(SceneKind::Cornell), 0..=3);
@@ -385,7 +418,7 @@ pub(crate) mod tests {
         );
         assert_eq!(options.spps_for(SceneKind::Moire), [4, 16]);
         assert_eq!(options.size, Some((32, 8)));
-        assert_eq!(options.filter, Filter::Mitchell);
+        assert_eq!(options.filters, [Filter::Mitchell]);
         assert_eq!((options.frame, options.frames), (9, Some(4)));
         assert_eq!(options.frame_range(SceneKind::Moire), 9..=12);
         assert_eq!(options.report, Some(PathBuf::from("r.json")));
@@ -406,7 +439,8 @@ pub(crate) mod tests {
             (&["--spp", "4,,16"], "\"\""),
             (&["--size", "0x4"], "\"0x4\""),
             (&["--size", "big"], "\"big\""),
-            (&["--filter", "lanczos"], "lanczos"),
+            (&["--filter", "sinc"], "sinc"),
+            (&["--filter-mode", "splat"], "splat"),
             (&["--frame", "-1"], "must be non-negative"),
             (&["--frame", "4294967296"], "4294967296"),
             (&["--frames", "0"], "0"),
@@ -445,6 +479,37 @@ pub(crate) mod tests {
             options.samplers_for(SceneKind::Cornell),
             [SOBOL, TracerSampler::SobolPairs]
         );
+    }
+
+    #[test]
+    fn every_filter_and_mode_parses_as_a_list() {
+        let options = run_options(&[
+            "--scene",
+            "moire",
+            "--filter",
+            "box,tent,gaussian,mitchell,lanczos,blackman-harris,tent",
+            "--filter-mode",
+            "importance,weighted,importance-mean",
+        ]);
+        assert_eq!(options.filters, Filter::ALL);
+        assert_eq!(
+            options.modes,
+            [
+                FilterMode::Importance,
+                FilterMode::Weighted,
+                FilterMode::ImportanceMean
+            ]
+        );
+        for filter in Filter::ALL {
+            assert_eq!(filter.name().parse(), Ok(filter));
+        }
+        let message = usage_error(&["--filter", "box,sinc"]);
+        for filter in Filter::ALL {
+            assert!(message.contains(filter.name()), "{filter}: {message}");
+        }
+        // Importance-sampled box is not the path tracer's mode either.
+        let message = usage_error(&["--scene", "cornell", "--filter-mode", "importance"]);
+        assert!(message.contains("--scene cornell"), "{message}");
     }
 
     #[test]
@@ -503,6 +568,7 @@ pub(crate) mod tests {
             "--spp",
             "--size",
             "--filter",
+            "--filter-mode",
             "--frame ",
             "--frames",
             "--target",

@@ -52,9 +52,10 @@ use indicatif::{ProgressBar, ProgressStyle};
 use crate::analysis::{blurred_rmse, error_spectrum};
 use crate::cli::Options;
 use crate::output::{
-    Crop, Picture, Series, Tile, contact_sheet, spectrum_svg, trade_plot_svg, viewing_zoom,
+    Crop, Picture, Series, Tile, contact_sheet, spectrum_svg, stack_rows, trade_plot_svg,
+    viewing_zoom,
 };
-use crate::render::{FILM_DIMENSION, Image, TracerSampler, render};
+use crate::render::{FILM_DIMENSION, Filter, FilterMode, Image, TracerSampler, render};
 use crate::report::{Row, docs_page_from, json_report, low_frequency_power, markdown_tables};
 use crate::scenes::{Built, SceneKind};
 use crate::shared::Failure;
@@ -101,19 +102,40 @@ fn run(options: &Options, stdout: &mut dyn Write) -> Result<(), Failure> {
                 * options.samplers_for(s).len()
                 * options.frames_for(s) as usize
         })
-        .sum::<usize>();
+        .sum::<usize>()
+        * options.filters.len()
+        * options.modes.len();
     let progress = Progress::new(frames as u64);
     let threads = rayon::current_num_threads();
+    let names = |items: Vec<&str>| items.join(",");
     progress.note(&format!(
-        "{threads} threads, filter {}, writing to {}",
-        options.filter,
+        "{threads} threads, filter {} ({}), writing to {}",
+        names(options.filters.iter().map(|f| f.name()).collect()),
+        names(options.modes.iter().map(|m| m.name()).collect()),
         out.display()
     ));
     let mut rows = Vec::new();
-    for &scene_kind in &options.scenes {
-        for (width, height) in options.sizes_for(scene_kind) {
-            rows.extend(run_scene(options, &progress, scene_kind, width, height)?);
+    let mut runs = Vec::new();
+    for &filter in &options.filters {
+        for &mode in &options.modes {
+            for &scene_kind in &options.scenes {
+                for (width, height) in options.sizes_for(scene_kind) {
+                    let run = run_scene(
+                        options,
+                        &progress,
+                        scene_kind,
+                        width,
+                        height,
+                        (filter, mode),
+                    )?;
+                    rows.extend(run.rows.iter().cloned());
+                    runs.push(run);
+                }
+            }
         }
+    }
+    if options.filters.len() * options.modes.len() > 1 {
+        write_filter_sheets(options, &runs)?;
     }
     progress.finish();
     let tables = markdown_tables(options, &rows);
@@ -133,17 +155,34 @@ fn run(options: &Options, stdout: &mut dyn Write) -> Result<(), Failure> {
     Ok(())
 }
 
-/// Renders one scene at one size with every requested sampler and count,
-/// and writes its pictures; returns its rows.
+/// One scene at one size under one filter and mode: its rows, its
+/// reference, and per count the first sampler's first frame (for the
+/// filters' contact sheet).
+struct SceneRun {
+    kind: SceneKind,
+    width: u32,
+    height: u32,
+    filter: Filter,
+    mode: FilterMode,
+    rows: Vec<Row>,
+    reference: Image,
+    /// `(spp, sampler, first frame, its RMSE)` of the first sampler.
+    firsts: Vec<(u32, TracerSampler, Image, f64)>,
+}
+
+/// Renders one scene at one size under `filter` and `mode` with every
+/// requested sampler and count, and writes its pictures.
 fn run_scene(
     options: &Options,
     progress: &Progress,
     kind: SceneKind,
     width: u32,
     height: u32,
-) -> Result<Vec<Row>, Failure> {
-    let job = SceneJob::prepare(options, progress, kind, width, height)?;
+    (filter, mode): (Filter, FilterMode),
+) -> Result<SceneRun, Failure> {
+    let job = SceneJob::prepare(options, progress, kind, width, height, filter, mode)?;
     let mut rows = Vec::new();
+    let mut firsts = Vec::new();
     for spp in options.spps_for(kind) {
         let mut frames = Vec::new();
         for sampler in options.samplers_for(kind) {
@@ -153,15 +192,105 @@ fn run_scene(
             }
         }
         // Nothing to show if every sampler rejected this count.
-        if !frames.is_empty() {
+        if let Some(first) = frames.first() {
             job.write_sheets(spp, &frames)?;
+            firsts.push((
+                spp,
+                first.row.sampler,
+                first.image.clone(),
+                first.first_rmse,
+            ));
         }
     }
     if !rows.is_empty() {
         job.write_trade_plot(&rows)?;
     }
     progress.note(&format!("{}: wrote {}", job.label, job.dir.display()));
-    Ok(rows)
+    Ok(SceneRun {
+        kind,
+        width,
+        height,
+        filter,
+        mode,
+        rows,
+        reference: job.reference,
+        firsts,
+    })
+}
+
+/// `filters-<scene>-<W>x<H>-<spp>spp.png` under `--out`: per scene, size
+/// and count, one row per filter of the same crop, enlarged: the
+/// reference, then the first sampler's frame in each mode.
+fn write_filter_sheets(options: &Options, runs: &[SceneRun]) -> Result<(), Failure> {
+    let mut jobs: Vec<(SceneKind, u32, u32)> = Vec::new();
+    for run in runs {
+        if !jobs.contains(&(run.kind, run.width, run.height)) {
+            jobs.push((run.kind, run.width, run.height));
+        }
+    }
+    for (kind, width, height) in jobs {
+        let crop = filter_crop_for(kind, width, height);
+        let zoom = (96 / crop.2.max(crop.3)).max(1);
+        for spp in options.spps_for(kind) {
+            let mut sheet_rows = Vec::new();
+            for &filter in &options.filters {
+                let mine = |mode: FilterMode| {
+                    runs.iter().find(|r| {
+                        (r.kind, r.width, r.height, r.filter, r.mode)
+                            == (kind, width, height, filter, mode)
+                    })
+                };
+                let Some(reference) = options.modes.iter().find_map(|&m| mine(m)) else {
+                    continue;
+                };
+                let mut tiles = vec![Tile {
+                    image: &reference.reference,
+                    label: vec![filter.name().into(), "reference".into()],
+                }];
+                for &mode in &options.modes {
+                    let Some(run) = mine(mode) else { continue };
+                    if let Some((_, sampler, image, rmse)) =
+                        run.firsts.iter().find(|(s, ..)| *s == spp)
+                    {
+                        tiles.push(Tile {
+                            image,
+                            label: vec![
+                                format!("{mode} {sampler}"),
+                                format!("{spp} spp rmse {rmse:.4}"),
+                            ],
+                        });
+                    }
+                }
+                sheet_rows.push(contact_sheet(&tiles, crop, zoom));
+            }
+            if sheet_rows.is_empty() {
+                continue;
+            }
+            let path = options
+                .out
+                .join(format!("filters-{kind}-{width}x{height}-{spp}spp.png"));
+            stack_rows(&sheet_rows)
+                .write_png(&path)
+                .map_err(|e| write_error(&path, e))?;
+        }
+    }
+    Ok(())
+}
+
+/// The small crop the filters' contact sheet enlarges: one edge where
+/// the filters differ. On the checker, the near squares' edges at the
+/// bottom of the film (sharp, a few pixels apart, where ringing and blur
+/// show); elsewhere the centre of the scene's own crop.
+fn filter_crop_for(scene: SceneKind, width: u32, height: u32) -> Crop {
+    let (fx, fy, fw, fh) = match scene {
+        SceneKind::Checker => (0.40, 0.80, 0.125, 0.125),
+        _ => (0.42, 0.42, 0.125, 0.125),
+    };
+    let fraction = |f: f64, n: u32| ((f * f64::from(n)) as u32).min(n - 1);
+    let (x, y) = (fraction(fx, width), fraction(fy, height));
+    let w = ((fw * f64::from(width)).ceil() as u32).clamp(1, width - x);
+    let h = ((fh * f64::from(height)).ceil() as u32).clamp(1, height - y);
+    (x, y, w, h)
 }
 
 /// One scene at one size: where its files go and the reference every
@@ -172,7 +301,10 @@ struct SceneJob<'a> {
     kind: SceneKind,
     width: u32,
     height: u32,
-    /// `<scene>-<W>x<H>-<filter>`, the directory's name.
+    filter: Filter,
+    mode: FilterMode,
+    /// `<scene>-<W>x<H>-<filter>`, with `-importance` for that mode, the
+    /// directory's name.
     label: String,
     dir: PathBuf,
     scene: Built,
@@ -201,14 +333,19 @@ impl<'a> SceneJob<'a> {
         kind: SceneKind,
         width: u32,
         height: u32,
+        filter: Filter,
+        mode: FilterMode,
     ) -> Result<Self, Failure> {
-        let label = format!("{kind}-{width}x{height}-{}", options.filter);
+        let label = match mode {
+            FilterMode::Weighted => format!("{kind}-{width}x{height}-{filter}"),
+            _ => format!("{kind}-{width}x{height}-{filter}-{mode}"),
+        };
         let dir = options.out.join(&label);
         fs::create_dir_all(&dir).map_err(|e| write_error(&dir, e))?;
         let scene = kind.build(width, height);
         let t = Instant::now();
         let (reference, computed) =
-            reference::load_or_compute(&options.out, kind, &scene, width, height, options.filter)
+            reference::load_or_compute(&options.out, kind, &scene, width, height, filter)
                 .map_err(|e| Failure::Io(format!("reference for {label}: {e}")))?;
         let frames = options.frame_range(kind);
         progress.note(&format!(
@@ -229,6 +366,8 @@ impl<'a> SceneJob<'a> {
             kind,
             width,
             height,
+            filter,
+            mode,
             label,
             dir,
             scene,
@@ -268,7 +407,8 @@ impl<'a> SceneJob<'a> {
                     height,
                     &frame_sampler,
                     FILM_DIMENSION,
-                    options.filter,
+                    self.filter,
+                    self.mode,
                 ),
                 Built::PathTraced => {
                     path::render(width, height, spp, frame_sampler, sampler.film_lens())
@@ -307,6 +447,16 @@ impl<'a> SceneJob<'a> {
             height,
             sampler,
             spp,
+            filter: self.filter,
+            mode: self.mode,
+            reference_range: self
+                .reference
+                .pixels
+                .iter()
+                .flatten()
+                .fold([f64::INFINITY, f64::NEG_INFINITY], |[low, high], &v| {
+                    [low.min(f64::from(v)), high.max(f64::from(v))]
+                }),
             rmse: (squares.0 / count).sqrt(),
             blurred_rmse: (squares.1 / count).sqrt(),
             low_power: low_frequency_power(&spectrum),

@@ -92,6 +92,19 @@ pub struct Tile<'a> {
     pub label: Vec<String>,
 }
 
+/// `rows` one above the other, left-aligned on the sheets' background.
+pub fn stack_rows(rows: &[Picture]) -> Picture {
+    let width = rows.iter().map(|p| p.width).max().unwrap_or(1);
+    let height = rows.iter().map(|p| p.height).sum::<u32>().max(1);
+    let mut sheet = Picture::blank(width, height, [24, 24, 28]);
+    let mut y = 0;
+    for row in rows {
+        sheet.blit(row, (0, 0, row.width, row.height), 0, y);
+        y += row.height;
+    }
+    sheet
+}
+
 /// `line` broken into pieces of at most `max_chars` characters, after a
 /// `-` or at a space where possible ("correlated-multi-jittered" becomes
 /// "correlated-" / "multi-jittered"), so labels never run into the next tile.

@@ -31,7 +31,7 @@ use rayon::prelude::*;
 use wellspread::{AnySampler, Padded, SamplerKind};
 
 use crate::path;
-use crate::render::{Filter, Image, REFERENCE_DIMENSION, box_pixel, render};
+use crate::render::{Filter, FilterMode, Image, REFERENCE_DIMENSION, box_pixel, render};
 use crate::scenes::{Built, Checker, Moire, Polygon, Scene, SceneKind};
 
 /// Samples per pixel for Monte Carlo references: 16 times the largest
@@ -40,7 +40,7 @@ pub const REFERENCE_SPP: u32 = 4096;
 
 /// First bytes of a cache file. Bump the digit whenever a scene, a filter
 /// or a reference method changes, so stale caches are recomputed.
-const MAGIC: &[u8; 8] = b"wsref-2\n";
+const MAGIC: &[u8; 8] = b"wsref-3\n";
 
 /// Where the reference for `scene` at `width x height` under `filter` is
 /// cached.
@@ -94,6 +94,7 @@ fn compute(scene: &Scene, width: u32, height: u32, filter: Filter) -> Image {
             &dense_sampler(),
             REFERENCE_DIMENSION,
             filter,
+            FilterMode::Weighted,
         ),
     }
 }
@@ -157,7 +158,7 @@ fn polygon_exact(polygon: &Polygon, width: u32, height: u32) -> Image {
 /// Nodes and weights of `N`-point Gauss-Legendre quadrature on `[-1, 1]`,
 /// by Newton's method on the Legendre polynomial (three-term recurrence)
 /// from the Chebyshev-like first guess `cos(pi (i + 3/4) / (N + 1/2))`.
-fn gauss_legendre<const N: usize>() -> ([f64; N], [f64; N]) {
+pub fn gauss_legendre<const N: usize>() -> ([f64; N], [f64; N]) {
     let mut nodes = [0.0; N];
     let mut weights = [0.0; N];
     let n = N as f64;

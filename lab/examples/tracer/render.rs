@@ -39,66 +39,169 @@ impl Image {
 }
 
 /// The reconstruction filter: how samples are weighted into pixels
-/// (Smith 1995, "A Pixel Is Not A Little Square"). Every filter here is
-/// separable, `w(dx, dy) = f(dx) f(dy)`, with `d` measured in pixels from
-/// the pixel centre.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// (Smith 1995, "A Pixel Is Not A Little Square"). Every filter is one of
+/// the library's ([`wellspread::filter`]), separable, `w(dx, dy) = f(dx)
+/// f(dy)`, with `d` measured in pixels from the pixel centre; its values
+/// and its samples both come from the library.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Filter {
     /// Each pixel averages its own samples: radius 1/2, the little square.
     Box,
-    /// Gaussian with sigma 1/2 pixel, cut at radius 3 sigma = 1.5 and
-    /// shifted down by its value there so it reaches zero continuously.
+    /// The tent (triangle), radius 1: linear interpolation's filter.
+    Tent,
+    /// Gaussian with sigma 1/2 pixel, truncated at radius 3 sigma = 1.5
+    /// (pbrt's defaults; truncated, not shifted down to zero).
     Gaussian,
     /// Mitchell & Netravali 1988 with B = C = 1/3, radius 2: their
     /// recommended trade between blur and ringing.
     Mitchell,
+    /// Lanczos: `sinc(x) sinc(x / 3)`, radius 3 (Lanczos-3).
+    Lanczos,
+    /// The 4-term Blackman-Harris window over radius 2.
+    BlackmanHarris,
 }
 
+/// The library's filters with the parameters [`Filter`] documents, built
+/// once (the tabulated ones build a table of 241 nodes).
+struct LibraryFilters {
+    r#box: wellspread::filter::BoxFilter,
+    tent: wellspread::filter::TentFilter,
+    gaussian: wellspread::filter::GaussianFilter,
+    mitchell: wellspread::filter::MitchellFilter,
+    lanczos: wellspread::filter::LanczosFilter,
+    blackman_harris: wellspread::filter::BlackmanHarrisFilter,
+}
+
+static LIBRARY_FILTERS: std::sync::LazyLock<LibraryFilters> = std::sync::LazyLock::new(|| {
+    use wellspread::filter::*;
+    let valid = "the tracer's filter parameters are valid";
+    LibraryFilters {
+        r#box: BoxFilter::new(0.5).expect(valid),
+        tent: TentFilter::new(1.0).expect(valid),
+        gaussian: GaussianFilter::new(1.5, 0.5).expect(valid),
+        mitchell: MitchellFilter::new(2.0, 1.0 / 3.0, 1.0 / 3.0).expect(valid),
+        lanczos: LanczosFilter::new(3.0, 3.0).expect(valid),
+        blackman_harris: BlackmanHarrisFilter::new(2.0).expect(valid),
+    }
+});
+
 impl Filter {
-    pub const ALL: [Filter; 3] = [Filter::Box, Filter::Gaussian, Filter::Mitchell];
+    pub const ALL: [Filter; 6] = [
+        Filter::Box,
+        Filter::Tent,
+        Filter::Gaussian,
+        Filter::Mitchell,
+        Filter::Lanczos,
+        Filter::BlackmanHarris,
+    ];
 
     pub fn name(self) -> &'static str {
         match self {
             Filter::Box => "box",
+            Filter::Tent => "tent",
             Filter::Gaussian => "gaussian",
             Filter::Mitchell => "mitchell",
+            Filter::Lanczos => "lanczos",
+            Filter::BlackmanHarris => "blackman-harris",
+        }
+    }
+
+    /// The library filter this one is.
+    pub fn library(self) -> &'static dyn wellspread::filter::Filter {
+        let filters = &*LIBRARY_FILTERS;
+        match self {
+            Filter::Box => &filters.r#box,
+            Filter::Tent => &filters.tent,
+            Filter::Gaussian => &filters.gaussian,
+            Filter::Mitchell => &filters.mitchell,
+            Filter::Lanczos => &filters.lanczos,
+            Filter::BlackmanHarris => &filters.blackman_harris,
         }
     }
 
     /// Half-width of the support, in pixels.
     pub fn radius(self) -> f64 {
-        match self {
-            Filter::Box => 0.5,
-            Filter::Gaussian => 1.5,
-            Filter::Mitchell => 2.0,
-        }
+        f64::from(self.library().radius())
     }
 
     /// Offsets from the pixel centre where the 1D profile is not smooth
-    /// (its ends and, for Mitchell, the joins of its cubic pieces), in
-    /// increasing order: the quadrature reference integrates piece by piece.
+    /// (its ends, the tent's peak, the joins of Mitchell's cubic pieces)
+    /// or, for the smooth windows, where its lobes meet, in increasing
+    /// order: the quadrature reference integrates piece by piece.
     pub fn breaks(self) -> &'static [f64] {
         match self {
             Filter::Box => &[-0.5, 0.5],
+            Filter::Tent => &[-1.0, 0.0, 1.0],
             Filter::Gaussian => &[-1.5, 1.5],
-            Filter::Mitchell => &[-2.0, -1.0, 0.0, 1.0, 2.0],
+            Filter::Mitchell | Filter::BlackmanHarris => &[-2.0, -1.0, 0.0, 1.0, 2.0],
+            Filter::Lanczos => &[-3.0, -2.0, -1.0, 0.0, 1.0, 2.0, 3.0],
         }
     }
 
-    /// The 1D profile at offset `d` pixels; zero outside the radius.
+    /// The 1D profile at offset `d` pixels (the library's, normalised to
+    /// integrate to 1); zero outside the radius.
     #[inline]
     pub fn weight_1d(self, d: f64) -> f64 {
-        let d = d.abs();
+        self.library().evaluate_1d(d)
+    }
+
+    /// Whether the profile goes negative somewhere (ringing at edges).
+    pub fn has_negative_lobes(self) -> bool {
+        self.library().weight_magnitude() > 1.0 + 1e-6
+    }
+}
+
+/// How samples become a filtered pixel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum FilterMode {
+    /// Box samples (uniform in their pixel) splatted into every pixel
+    /// whose filter reaches them, weighted by the filter's value:
+    /// `sum(f L) / sum(f)`.
+    Weighted,
+    /// Filter-importance sampling: each pixel's own samples are mapped
+    /// through the library's `Filter::sample` to `centre + offset`, and
+    /// the pixel is pbrt-v4's `sum(w L) / sum(w)` with `w = f / pdf`.
+    Importance,
+    /// The same samples, the unbiased mean instead of the ratio:
+    /// `sum(w L) / (n m)`, `m` the filter's mass inside the film (1 away
+    /// from the border). No division by a sum of signed weights.
+    ImportanceMean,
+}
+
+impl FilterMode {
+    pub const ALL: [FilterMode; 3] = [
+        FilterMode::Weighted,
+        FilterMode::Importance,
+        FilterMode::ImportanceMean,
+    ];
+
+    pub fn name(self) -> &'static str {
         match self {
-            Filter::Box => f64::from(u8::from(d < 0.5)),
-            Filter::Gaussian => {
-                const SIGMA: f64 = 0.5;
-                let g = |t: f64| (-t * t / (2.0 * SIGMA * SIGMA)).exp();
-                (g(d) - g(1.5)).max(0.0)
-            }
-            // Mitchell & Netravali's recommended B = C = 1/3.
-            Filter::Mitchell => wellspread::filter::mitchell_netravali(d, 1.0 / 3.0, 1.0 / 3.0),
+            FilterMode::Weighted => "weighted",
+            FilterMode::Importance => "importance",
+            FilterMode::ImportanceMean => "importance-mean",
         }
+    }
+}
+
+impl fmt::Display for FilterMode {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for FilterMode {
+    type Err = String;
+
+    fn from_str(name: &str) -> Result<Self, Self::Err> {
+        FilterMode::ALL
+            .into_iter()
+            .find(|mode| mode.name() == name)
+            .ok_or_else(|| {
+                format!(
+                    "unknown filter mode {name:?}; expected one of: weighted importance importance-mean"
+                )
+            })
     }
 }
 
@@ -116,7 +219,11 @@ impl FromStr for Filter {
             .into_iter()
             .find(|filter| filter.name() == name)
             .ok_or_else(|| {
-                format!("unknown filter {name:?}; expected one of: box gaussian mitchell")
+                let names: Vec<&str> = Filter::ALL.iter().map(|f| f.name()).collect();
+                format!(
+                    "unknown filter {name:?}; expected one of: {}",
+                    names.join(" ")
+                )
             })
     }
 }
@@ -234,8 +341,9 @@ pub const REFERENCE_DIMENSION: u32 = 1;
 
 /// Renders `scene` on its `width x height` film: pixel `(px, py)` takes
 /// samples `0..samples_per_pixel()` of dimension pair `dimension` of
-/// `sampler` as offsets inside the pixel, and `filter` turns them into
-/// pixel values.
+/// `sampler`, and `filter` turns them into pixel values: as offsets
+/// inside the pixel weighted by the filter, or mapped through the
+/// filter's sampling (`mode`).
 ///
 /// Runs on the current rayon pool (`ThreadPool::install` picks another).
 pub fn render<P: PixelSampler>(
@@ -245,10 +353,16 @@ pub fn render<P: PixelSampler>(
     sampler: &P,
     dimension: u32,
     filter: Filter,
+    mode: FilterMode,
 ) -> Image {
-    let pixels = match filter {
-        Filter::Box => render_box(scene, width, height, sampler, dimension),
-        _ => render_filtered(scene, width, height, sampler, dimension, filter),
+    let pixels = match (filter, mode) {
+        (_, FilterMode::Importance | FilterMode::ImportanceMean) => {
+            render_importance(scene, width, height, sampler, dimension, filter, mode)
+        }
+        (Filter::Box, FilterMode::Weighted) => render_box(scene, width, height, sampler, dimension),
+        (_, FilterMode::Weighted) => {
+            render_filtered(scene, width, height, sampler, dimension, filter)
+        }
     };
     Image {
         width,
@@ -313,6 +427,145 @@ pub fn box_pixel<P: PixelSampler>(
     }
     let inverse_count = 1.0 / f64::from(spp(sampler));
     sum.map(|s| (s * inverse_count) as f32)
+}
+
+/// Filter-importance sampling: pixel `(px, py)`'s sample `u` goes to
+/// `centre + offset` for the library's `filter.sample(u)`, with weight
+/// `w = f / pdf` (1 for box, tent and Gaussian; `+-c` for the filters with
+/// negative lobes). The pixel is `sum(w L) / sum(w)`, the estimator
+/// pbrt-v4's `RGBFilm` uses (`AddSample` accumulates `w L` and `w`,
+/// `GetPixelRGB` divides). Samples that land off the film are dropped, so
+/// border pixels normalise over the film like the weighted mode and the
+/// references do. Each pixel reads only its own samples: rows are
+/// independent rayon tasks. [`FilterMode::ImportanceMean`] divides by
+/// `n` times the filter's mass on the film instead.
+fn render_importance<P: PixelSampler>(
+    scene: &Scene,
+    width: u32,
+    height: u32,
+    sampler: &P,
+    dimension: u32,
+    filter: Filter,
+    mode: FilterMode,
+) -> Vec<Rgb> {
+    let mut pixels = vec![[0.0; 3]; width as usize * height as usize];
+    pixels
+        .par_chunks_mut(width as usize)
+        .enumerate()
+        .for_each(|(py, row)| {
+            for (pixel, px) in row.iter_mut().zip(0..width) {
+                let estimate = match mode {
+                    FilterMode::ImportanceMean => importance_mean_pixel,
+                    _ => importance_pixel,
+                };
+                *pixel = estimate(
+                    scene, width, height, sampler, dimension, filter, px, py as u32,
+                );
+            }
+        });
+    pixels
+}
+
+/// One pixel of [`render_importance`]: `sum(w L) / sum(w)` in f64, black
+/// when no weight is left (every sample off the film, or negative lobes
+/// cancelling at very low counts).
+#[allow(clippy::too_many_arguments)]
+pub fn importance_pixel<P: PixelSampler>(
+    scene: &Scene,
+    width: u32,
+    height: u32,
+    sampler: &P,
+    dimension: u32,
+    filter: Filter,
+    px: u32,
+    py: u32,
+) -> Rgb {
+    let library = filter.library();
+    let mut sum = [0.0f64; 4];
+    for index in 0..spp(sampler) {
+        let u = sampler.sample_pixel([px, py], index, dimension);
+        let s = library.sample(u);
+        let x = f64::from(px) + 0.5 + f64::from(s.offset.x);
+        let y = f64::from(py) + 0.5 + f64::from(s.offset.y);
+        if !(0.0..f64::from(width)).contains(&x) || !(0.0..f64::from(height)).contains(&y) {
+            continue;
+        }
+        let w = f64::from(s.weight);
+        let radiance = scene.radiance(x, y);
+        for c in 0..3 {
+            sum[c] += w * f64::from(radiance[c]);
+        }
+        sum[3] += w;
+    }
+    if sum[3].abs() > 1e-12 {
+        [sum[0], sum[1], sum[2]].map(|s| (s / sum[3]) as f32)
+    } else {
+        [0.0; 3]
+    }
+}
+
+/// One pixel of [`FilterMode::ImportanceMean`]: `sum(w L) / (n m)` in
+/// f64, with `m` the mass of the (normalised) filter inside the film,
+/// `m_x m_y`, each the 1D profile's integral over the part of the support
+/// on the film (8-point Gauss-Legendre per piece between the breaks).
+/// Off-film samples add nothing, and `E[w 1(on film)] = m`, so the
+/// estimate is unbiased for the clipped, renormalised filter the
+/// references use.
+#[allow(clippy::too_many_arguments)]
+pub fn importance_mean_pixel<P: PixelSampler>(
+    scene: &Scene,
+    width: u32,
+    height: u32,
+    sampler: &P,
+    dimension: u32,
+    filter: Filter,
+    px: u32,
+    py: u32,
+) -> Rgb {
+    let library = filter.library();
+    let mut sum = [0.0f64; 3];
+    for index in 0..spp(sampler) {
+        let u = sampler.sample_pixel([px, py], index, dimension);
+        let s = library.sample(u);
+        let x = f64::from(px) + 0.5 + f64::from(s.offset.x);
+        let y = f64::from(py) + 0.5 + f64::from(s.offset.y);
+        if !(0.0..f64::from(width)).contains(&x) || !(0.0..f64::from(height)).contains(&y) {
+            continue;
+        }
+        let w = f64::from(s.weight);
+        let radiance = scene.radiance(x, y);
+        for c in 0..3 {
+            sum[c] += w * f64::from(radiance[c]);
+        }
+    }
+    let mass = film_mass(filter, f64::from(px) + 0.5, f64::from(width))
+        * film_mass(filter, f64::from(py) + 0.5, f64::from(height));
+    let scale = 1.0 / (f64::from(spp(sampler)) * mass);
+    sum.map(|s| (s * scale) as f32)
+}
+
+/// The integral of `filter`'s normalised 1D profile centred at `centre`
+/// over `[0, limit]`: 1 when the support is inside.
+fn film_mass(filter: Filter, centre: f64, limit: f64) -> f64 {
+    let r = filter.radius();
+    if centre - r >= 0.0 && centre + r <= limit {
+        return 1.0;
+    }
+    let (nodes, weights) = crate::reference::gauss_legendre::<8>();
+    filter
+        .breaks()
+        .windows(2)
+        .map(|pair| ((centre + pair[0]).max(0.0), (centre + pair[1]).min(limit)))
+        .filter(|(a, b)| b > a)
+        .map(|(a, b)| {
+            let half = 0.5 * (b - a);
+            nodes
+                .iter()
+                .zip(&weights)
+                .map(|(t, w)| w * half * filter.weight_1d(a + (t + 1.0) * half - centre))
+                .sum::<f64>()
+        })
+        .sum()
 }
 
 /// Output rows per rayon task for the wide filters. Each band also shades
@@ -428,20 +681,22 @@ mod tests {
                 continue;
             };
             for filter in Filter::ALL {
-                for kind in [
-                    TracerSampler::Pixel(PixelSamplerKind::Padded(
-                        SamplerKind::CorrelatedMultiJittered,
-                    )),
-                    TracerSampler::Pixel(PixelSamplerKind::ZSobol),
-                ] {
-                    let sampler = kind.build(16, width, height, 7).unwrap();
-                    let a = one.install(|| render(&scene, width, height, &sampler, 0, filter));
-                    let b = two.install(|| render(&scene, width, height, &sampler, 0, filter));
-                    assert_eq!(
-                        pixel_bits(&a.pixels),
-                        pixel_bits(&b.pixels),
-                        "{scene_kind} {filter} {kind}"
-                    );
+                for mode in FilterMode::ALL {
+                    for kind in [
+                        TracerSampler::Pixel(PixelSamplerKind::Padded(
+                            SamplerKind::CorrelatedMultiJittered,
+                        )),
+                        TracerSampler::Pixel(PixelSamplerKind::ZSobol),
+                    ] {
+                        let sampler = kind.build(16, width, height, 7).unwrap();
+                        let draw = || render(&scene, width, height, &sampler, 0, filter, mode);
+                        let (a, b) = (one.install(draw), two.install(draw));
+                        assert_eq!(
+                            pixel_bits(&a.pixels),
+                            pixel_bits(&b.pixels),
+                            "{scene_kind} {filter} {mode} {kind}"
+                        );
+                    }
                 }
             }
         }
@@ -451,20 +706,30 @@ mod tests {
     fn filters_are_normalised_and_vanish_at_their_radius() {
         for filter in Filter::ALL {
             let r = filter.radius();
-            assert_eq!(filter.weight_1d(r), 0.0, "{filter}");
-            // Midpoint rule over the support: each profile integrates to a
-            // positive constant (1 for box and Mitchell).
+            assert_eq!(filter.weight_1d(r * (1.0 + 1e-9)), 0.0, "{filter}");
+            assert_eq!(filter.weight_1d(-r * (1.0 + 1e-9)), 0.0, "{filter}");
+            // Midpoint rule over the support, piece by piece between the
+            // breaks: the library's profiles integrate to 1.
             let n = 100_000;
-            let h = 2.0 * r / f64::from(n);
-            let integral: f64 = (0..n)
-                .map(|i| filter.weight_1d(-r + (f64::from(i) + 0.5) * h) * h)
+            let integral: f64 = filter
+                .breaks()
+                .windows(2)
+                .map(|pair| {
+                    let h = (pair[1] - pair[0]) / f64::from(n);
+                    (0..n)
+                        .map(|i| filter.weight_1d(pair[0] + (f64::from(i) + 0.5) * h) * h)
+                        .sum::<f64>()
+                })
                 .sum();
-            if filter != Filter::Gaussian {
-                assert!((integral - 1.0).abs() < 1e-6, "{filter}: {integral}");
-            } else {
-                assert!(integral > 0.5, "{filter}: {integral}");
-            }
+            assert!((integral - 1.0).abs() < 1e-6, "{filter}: {integral}");
+            assert_eq!((filter.breaks()[0], filter.breaks().last()), (-r, Some(&r)));
         }
+        // Ringing needs negative lobes: Mitchell and Lanczos have them.
+        let ringing: Vec<Filter> = Filter::ALL
+            .into_iter()
+            .filter(|f| f.has_negative_lobes())
+            .collect();
+        assert_eq!(ringing, [Filter::Mitchell, Filter::Lanczos]);
     }
 
     #[test]
@@ -474,8 +739,134 @@ mod tests {
         let sampler = TracerSampler::Pixel(PixelSamplerKind::Padded(SamplerKind::Random))
             .build(4, 64, 64, 0)
             .unwrap();
-        let image = render(&scene, 64, 64, &sampler, FILM_DIMENSION, Filter::Box);
+        let image = render(
+            &scene,
+            64,
+            64,
+            &sampler,
+            FILM_DIMENSION,
+            Filter::Box,
+            FilterMode::Weighted,
+        );
         assert_eq!(image.pixels[32 * 64 + 20], crate::scenes::Polygon::YELLOW);
+    }
+
+    #[test]
+    fn importance_sampled_render_of_a_constant_region_is_exact() {
+        // Pixel (20, 32) of the 64 x 64 polygon is more than 3 pixels (the
+        // widest radius, Lanczos) from every edge: every sample sees
+        // yellow, and sum(w L) / sum(w) returns it for any weights, the
+        // negative ones of Mitchell and Lanczos included.
+        let scene = SceneKind::Polygon.film(64, 64).unwrap();
+        for kind in [
+            PixelSamplerKind::Padded(SamplerKind::Random),
+            PixelSamplerKind::Padded(SamplerKind::Sobol),
+            PixelSamplerKind::ZSobol,
+        ] {
+            let sampler = TracerSampler::Pixel(kind).build(16, 64, 64, 3).unwrap();
+            for filter in Filter::ALL {
+                let pixel =
+                    importance_pixel(&scene, 64, 64, &sampler, FILM_DIMENSION, filter, 20, 32);
+                assert_eq!(pixel, crate::scenes::Polygon::YELLOW, "{filter} {kind}");
+            }
+        }
+    }
+
+    #[test]
+    fn importance_mean_is_exact_where_weights_are_one_and_unbiased_elsewhere() {
+        // Box, tent and Gaussian have weight exactly 1: sum(L) / n is
+        // exact on a constant region. Mitchell and Lanczos carry signed
+        // weights, so the mean fluctuates about the value, and over many
+        // frames it averages to it.
+        let scene = SceneKind::Polygon.film(64, 64).unwrap();
+        let yellow = crate::scenes::Polygon::YELLOW;
+        let kind = TracerSampler::Pixel(PixelSamplerKind::Padded(SamplerKind::Random));
+        for filter in [Filter::Box, Filter::Tent, Filter::Gaussian] {
+            let sampler = kind.build(16, 64, 64, 3).unwrap();
+            let pixel =
+                importance_mean_pixel(&scene, 64, 64, &sampler, FILM_DIMENSION, filter, 20, 32);
+            assert_eq!(pixel, yellow, "{filter}");
+        }
+        for filter in [Filter::Mitchell, Filter::Lanczos] {
+            let frames = 400;
+            let mean: f64 = (0..frames)
+                .map(|frame| {
+                    let sampler = kind.build(16, 64, 64, frame).unwrap();
+                    let pixel = importance_mean_pixel(
+                        &scene,
+                        64,
+                        64,
+                        &sampler,
+                        FILM_DIMENSION,
+                        filter,
+                        20,
+                        32,
+                    );
+                    f64::from(pixel[0])
+                })
+                .sum::<f64>()
+                / f64::from(frames);
+            // 6400 samples of weight +-c (c < 1.4): a standard error
+            // under 0.02; 0.1 is five of them.
+            assert!(
+                (mean - f64::from(yellow[0])).abs() < 0.1,
+                "{filter}: {mean}"
+            );
+        }
+        // The clipped mass: half a tent at the film's edge, all inside.
+        assert!((film_mass(Filter::Tent, 0.0, 64.0) - 0.5).abs() < 1e-12);
+        assert_eq!(film_mass(Filter::Lanczos, 32.0, 64.0), 1.0);
+    }
+
+    #[test]
+    fn importance_sampling_places_samples_by_the_library_filter() {
+        // A one-sample pixel at the film's centre: the pixel is the
+        // radiance at centre + the library's offset for the sampler's u.
+        let scene = SceneKind::Polygon.film(64, 64).unwrap();
+        let sampler = TracerSampler::Pixel(PixelSamplerKind::Padded(SamplerKind::Random))
+            .build(1, 64, 64, 0)
+            .unwrap();
+        for filter in Filter::ALL {
+            for (px, py) in [(7, 11), (40, 30), (60, 5)] {
+                let u = sampler.sample_pixel([px, py], 0, FILM_DIMENSION);
+                let s = filter.library().sample(u);
+                let x = f64::from(px) + 0.5 + f64::from(s.offset.x);
+                let y = f64::from(py) + 0.5 + f64::from(s.offset.y);
+                let pixel =
+                    importance_pixel(&scene, 64, 64, &sampler, FILM_DIMENSION, filter, px, py);
+                assert_eq!(pixel, scene.radiance(x, y), "{filter} ({px}, {py})");
+            }
+        }
+    }
+
+    #[test]
+    fn importance_sampled_box_matches_the_box_render() {
+        // The box filter's map is `u - 1/2` about the centre: the same
+        // film positions as the plain box render, up to f32 rounding of
+        // the offset, so the images agree to a tiny fraction.
+        let scene = SceneKind::Moire.film(32, 32).unwrap();
+        let sampler = TracerSampler::Pixel(PixelSamplerKind::Padded(SamplerKind::Sobol))
+            .build(16, 32, 32, 1)
+            .unwrap();
+        let plain = render(
+            &scene,
+            32,
+            32,
+            &sampler,
+            0,
+            Filter::Box,
+            FilterMode::Weighted,
+        );
+        let sampled = render(
+            &scene,
+            32,
+            32,
+            &sampler,
+            0,
+            Filter::Box,
+            FilterMode::Importance,
+        );
+        assert!(plain.rmse(&sampled) < 1e-3, "{}", plain.rmse(&sampled));
     }
 }
 

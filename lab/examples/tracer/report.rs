@@ -7,7 +7,7 @@ use std::fs;
 use wellspread::{PixelSamplerKind, SamplerKind};
 
 use crate::cli::Options;
-use crate::render::{SOBOL, TracerSampler};
+use crate::render::{Filter, FilterMode, SOBOL, TracerSampler};
 use crate::scenes::SceneKind;
 
 /// One measured row: a scene, size, sampler and count, over `frames` frames.
@@ -18,6 +18,12 @@ pub struct Row {
     pub height: u32,
     pub sampler: TracerSampler,
     pub spp: u32,
+    pub filter: Filter,
+    pub mode: FilterMode,
+    /// The reference's least and greatest value over every pixel and
+    /// channel: a filter with negative lobes overshoots the scene's range
+    /// at edges (ringing).
+    pub reference_range: [f64; 2],
     /// Root-mean-square over the frames of each frame's RMSE.
     pub rmse: f64,
     /// The same after the viewing blur ([`blurred_rmse`]).
@@ -79,6 +85,13 @@ pub fn format_ms(seconds: f64) -> String {
 /// each spp, then the spp and time needed to reach the target RMSE; then
 /// the claims this run has the evidence for.
 pub fn markdown_tables(options: &Options, rows: &[Row]) -> String {
+    if options.filters.len() * options.modes.len() > 1 {
+        return filter_tables(options, rows);
+    }
+    let mode = match options.modes[0] {
+        FilterMode::Weighted => String::new(),
+        mode => format!(" ({mode})"),
+    };
     let mut text = String::new();
     for (scene, width, height) in jobs(rows) {
         let frames = match options.frames_for(scene) {
@@ -87,8 +100,8 @@ pub fn markdown_tables(options: &Options, rows: &[Row]) -> String {
         };
         let _ = writeln!(
             text,
-            "\n### {scene} {width}x{height}, {} filter: RMSE / blurred RMSE (ms per frame), {frames}; what reaching RMSE {} costs\n",
-            options.filter, options.target
+            "\n### {scene} {width}x{height}, {} filter{mode}: RMSE / blurred RMSE (ms per frame), {frames}; what reaching RMSE {} costs\n",
+            options.filters[0], options.target
         );
         let spps = options.spps_for(scene);
         let mut header = String::from("| sampler |");
@@ -138,6 +151,127 @@ pub fn markdown_tables(options: &Options, rows: &[Row]) -> String {
     }
     if let Some(table) = joint_versus_pairs(rows) {
         let _ = writeln!(text, "\n{table}");
+    }
+    text
+}
+
+/// The run of several filters or modes: one table per scene and size,
+/// a line per filter and sampler, RMSE / blurred RMSE per count and mode
+/// side by side; then, for each sampled mode run beside `weighted`, the
+/// geometric mean over the counts of its RMSE over weighted's; then ms
+/// per frame at the largest count, per mode.
+fn filter_tables(options: &Options, rows: &[Row]) -> String {
+    let mut text = String::new();
+    let compared: Vec<FilterMode> = if options.modes.contains(&FilterMode::Weighted) {
+        options
+            .modes
+            .iter()
+            .copied()
+            .filter(|&m| m != FilterMode::Weighted)
+            .collect()
+    } else {
+        Vec::new()
+    };
+    for (scene, width, height) in jobs(rows) {
+        let frames = match options.frames_for(scene) {
+            1 => "one frame".to_owned(),
+            k => format!("RMS over {k} frames"),
+        };
+        let _ = writeln!(
+            text,
+            "\n### {scene} {width}x{height}: RMSE / blurred RMSE per filter and mode, {frames}\n"
+        );
+        let spps = options.spps_for(scene);
+        let largest = spps.last().copied().unwrap_or(1);
+        let mut header = String::from("| filter | sampler |");
+        let mut rule = String::from("| --- | --- |");
+        for spp in &spps {
+            for mode in &options.modes {
+                let _ = write!(header, " {spp} spp {mode} |");
+                rule.push_str(" ---: |");
+            }
+        }
+        for mode in &compared {
+            let _ = write!(header, " {mode} / weighted RMSE |");
+            rule.push_str(" ---: |");
+        }
+        for mode in &options.modes {
+            let _ = write!(header, " ms at {largest} spp {mode} |");
+            rule.push_str(" ---: |");
+        }
+        let _ = writeln!(text, "{header}\n{rule}");
+        for &filter in &options.filters {
+            for kind in options.samplers_for(scene) {
+                let find = |spp: u32, mode: FilterMode| {
+                    rows.iter().find(|r| {
+                        (
+                            r.scene, r.width, r.height, r.sampler, r.spp, r.filter, r.mode,
+                        ) == (scene, width, height, kind, spp, filter, mode)
+                    })
+                };
+                let mut line = if filter.has_negative_lobes() {
+                    format!("| {filter} (negative lobes) | {kind} |")
+                } else {
+                    format!("| {filter} | {kind} |")
+                };
+                for &spp in &spps {
+                    for &mode in &options.modes {
+                        match find(spp, mode) {
+                            Some(r) => {
+                                let _ = write!(
+                                    line,
+                                    " {} / {} |",
+                                    format_error(r.rmse),
+                                    format_error(r.blurred_rmse)
+                                );
+                            }
+                            None => line.push_str(" skipped |"),
+                        }
+                    }
+                }
+                for &mode in &compared {
+                    let logs: Vec<f64> = spps
+                        .iter()
+                        .filter_map(|&spp| {
+                            let (w, i) = (find(spp, FilterMode::Weighted)?, find(spp, mode)?);
+                            (w.rmse > 0.0 && i.rmse > 0.0).then(|| (i.rmse / w.rmse).ln())
+                        })
+                        .collect();
+                    if logs.is_empty() {
+                        line.push_str(" - |");
+                    } else {
+                        let ratio = (logs.iter().sum::<f64>() / logs.len() as f64).exp();
+                        let _ = write!(line, " {ratio:.3} |");
+                    }
+                }
+                for &mode in &options.modes {
+                    match find(largest, mode) {
+                        Some(r) => {
+                            let _ = write!(line, " {} |", format_ms(r.seconds));
+                        }
+                        None => line.push_str(" - |"),
+                    }
+                }
+                let _ = writeln!(text, "{line}");
+            }
+        }
+        // Ringing: how far each filter's reference leaves the scene's own
+        // range, which the box reference (an average) cannot leave.
+        let mut ranges = Vec::new();
+        for &filter in &options.filters {
+            if let Some(r) = rows
+                .iter()
+                .find(|r| (r.scene, r.width, r.height, r.filter) == (scene, width, height, filter))
+            {
+                let [low, high] = r.reference_range;
+                ranges.push(format!("{filter} [{low:.4}, {high:.4}]"));
+            }
+        }
+        let _ = writeln!(
+            text,
+            "\nReference range (least and greatest pixel value): {}.",
+            ranges.join(", ")
+        );
     }
     text
 }
@@ -283,8 +417,10 @@ pub fn json_report(rows: &[Row]) -> String {
         .iter()
         .map(|r| {
             format!(
-                r#"  {{"scene": "{}", "sampler": "{}", "spp": {}, "rmse": {:e}, "blurred_rmse": {:e}, "low_frequency_power": {}, "seconds": {:e}, "frames": {}, "width": {}, "height": {}}}"#,
+                r#"  {{"scene": "{}", "filter": "{}", "filter_mode": "{}", "sampler": "{}", "spp": {}, "rmse": {:e}, "blurred_rmse": {:e}, "low_frequency_power": {}, "seconds": {:e}, "frames": {}, "width": {}, "height": {}}}"#,
                 r.scene,
+                r.filter,
+                r.mode,
                 r.sampler.name(),
                 r.spp,
                 r.rmse,
@@ -385,6 +521,9 @@ mod tests {
             height: 8,
             sampler,
             spp,
+            filter: Filter::Box,
+            mode: FilterMode::Weighted,
+            reference_range: [0.0, 1.0],
             rmse,
             blurred_rmse: rmse / 2.0,
             low_power: rmse * rmse,
