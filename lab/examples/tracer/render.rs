@@ -194,15 +194,28 @@ impl FromStr for FilterMode {
     type Err = String;
 
     fn from_str(name: &str) -> Result<Self, Self::Err> {
-        FilterMode::ALL
-            .into_iter()
-            .find(|mode| mode.name() == name)
-            .ok_or_else(|| {
-                format!(
-                    "unknown filter mode {name:?}; expected one of: weighted importance importance-mean"
-                )
-            })
+        by_name(&FilterMode::ALL, name, FilterMode::name, "filter mode")
     }
+}
+
+/// The one of `all` whose `name_of` is `name`, or an error that lists
+/// every name.
+fn by_name<T: Copy>(
+    all: &[T],
+    name: &str,
+    name_of: fn(T) -> &'static str,
+    what: &str,
+) -> Result<T, String> {
+    all.iter()
+        .copied()
+        .find(|&item| name_of(item) == name)
+        .ok_or_else(|| {
+            let names: Vec<&str> = all.iter().map(|&item| name_of(item)).collect();
+            format!(
+                "unknown {what} {name:?}; expected one of: {}",
+                names.join(" ")
+            )
+        })
 }
 
 impl fmt::Display for Filter {
@@ -215,16 +228,7 @@ impl FromStr for Filter {
     type Err = String;
 
     fn from_str(name: &str) -> Result<Self, Self::Err> {
-        Filter::ALL
-            .into_iter()
-            .find(|filter| filter.name() == name)
-            .ok_or_else(|| {
-                let names: Vec<&str> = Filter::ALL.iter().map(|f| f.name()).collect();
-                format!(
-                    "unknown filter {name:?}; expected one of: {}",
-                    names.join(" ")
-                )
-            })
+        by_name(&Filter::ALL, name, Filter::name, "filter")
     }
 }
 
@@ -466,11 +470,12 @@ fn render_importance<P: PixelSampler>(
     pixels
 }
 
-/// One pixel of [`render_importance`]: `sum(w L) / sum(w)` in f64, black
-/// when no weight is left (every sample off the film, or negative lobes
-/// cancelling at very low counts).
+/// The sums both importance-sampled estimators share, in f64: `sum(w L)`
+/// per channel and `sum(w)`, over the pixel's samples placed at the
+/// pixel centre plus the filter's offset; samples off the film add
+/// nothing.
 #[allow(clippy::too_many_arguments)]
-pub fn importance_pixel<P: PixelSampler>(
+fn importance_sums<P: PixelSampler>(
     scene: &Scene,
     width: u32,
     height: u32,
@@ -479,7 +484,7 @@ pub fn importance_pixel<P: PixelSampler>(
     filter: Filter,
     px: u32,
     py: u32,
-) -> Rgb {
+) -> [f64; 4] {
     let library = filter.library();
     let mut sum = [0.0f64; 4];
     for index in 0..spp(sampler) {
@@ -497,6 +502,24 @@ pub fn importance_pixel<P: PixelSampler>(
         }
         sum[3] += w;
     }
+    sum
+}
+
+/// One pixel of [`render_importance`]: `sum(w L) / sum(w)`, black when no
+/// weight is left (every sample off the film, or negative lobes
+/// cancelling at very low counts).
+#[allow(clippy::too_many_arguments)]
+pub fn importance_pixel<P: PixelSampler>(
+    scene: &Scene,
+    width: u32,
+    height: u32,
+    sampler: &P,
+    dimension: u32,
+    filter: Filter,
+    px: u32,
+    py: u32,
+) -> Rgb {
+    let sum = importance_sums(scene, width, height, sampler, dimension, filter, px, py);
     if sum[3].abs() > 1e-12 {
         [sum[0], sum[1], sum[2]].map(|s| (s / sum[3]) as f32)
     } else {
@@ -504,13 +527,12 @@ pub fn importance_pixel<P: PixelSampler>(
     }
 }
 
-/// One pixel of [`FilterMode::ImportanceMean`]: `sum(w L) / (n m)` in
-/// f64, with `m` the mass of the (normalised) filter inside the film,
-/// `m_x m_y`, each the 1D profile's integral over the part of the support
-/// on the film (8-point Gauss-Legendre per piece between the breaks).
-/// Off-film samples add nothing, and `E[w 1(on film)] = m`, so the
-/// estimate is unbiased for the clipped, renormalised filter the
-/// references use.
+/// One pixel of [`FilterMode::ImportanceMean`]: `sum(w L) / (n m)`, with
+/// `m` the mass of the (normalised) filter inside the film, `m_x m_y`,
+/// each the 1D profile's integral over the part of the support on the
+/// film (8-point Gauss-Legendre per piece between the breaks). Off-film
+/// samples add nothing, and `E[w 1(on film)] = m`, so the estimate is
+/// unbiased for the clipped, renormalised filter the references use.
 #[allow(clippy::too_many_arguments)]
 pub fn importance_mean_pixel<P: PixelSampler>(
     scene: &Scene,
@@ -522,26 +544,11 @@ pub fn importance_mean_pixel<P: PixelSampler>(
     px: u32,
     py: u32,
 ) -> Rgb {
-    let library = filter.library();
-    let mut sum = [0.0f64; 3];
-    for index in 0..spp(sampler) {
-        let u = sampler.sample_pixel([px, py], index, dimension);
-        let s = library.sample(u);
-        let x = f64::from(px) + 0.5 + f64::from(s.offset.x);
-        let y = f64::from(py) + 0.5 + f64::from(s.offset.y);
-        if !(0.0..f64::from(width)).contains(&x) || !(0.0..f64::from(height)).contains(&y) {
-            continue;
-        }
-        let w = f64::from(s.weight);
-        let radiance = scene.radiance(x, y);
-        for c in 0..3 {
-            sum[c] += w * f64::from(radiance[c]);
-        }
-    }
+    let sum = importance_sums(scene, width, height, sampler, dimension, filter, px, py);
     let mass = film_mass(filter, f64::from(px) + 0.5, f64::from(width))
         * film_mass(filter, f64::from(py) + 0.5, f64::from(height));
     let scale = 1.0 / (f64::from(spp(sampler)) * mass);
-    sum.map(|s| (s * scale) as f32)
+    [sum[0], sum[1], sum[2]].map(|s| (s * scale) as f32)
 }
 
 /// The integral of `filter`'s normalised 1D profile centred at `centre`

@@ -94,10 +94,7 @@ pub fn markdown_tables(options: &Options, rows: &[Row]) -> String {
     };
     let mut text = String::new();
     for (scene, width, height) in jobs(rows) {
-        let frames = match options.frames_for(scene) {
-            1 => "one frame".to_owned(),
-            k => format!("RMS over {k} frames"),
-        };
+        let frames = frames_label(options.frames_for(scene));
         let _ = writeln!(
             text,
             "\n### {scene} {width}x{height}, {} filter{mode}: RMSE / blurred RMSE (ms per frame), {frames}; what reaching RMSE {} costs\n",
@@ -173,10 +170,7 @@ fn filter_tables(options: &Options, rows: &[Row]) -> String {
         Vec::new()
     };
     for (scene, width, height) in jobs(rows) {
-        let frames = match options.frames_for(scene) {
-            1 => "one frame".to_owned(),
-            k => format!("RMS over {k} frames"),
-        };
+        let frames = frames_label(options.frames_for(scene));
         let _ = writeln!(
             text,
             "\n### {scene} {width}x{height}: RMSE / blurred RMSE per filter and mode, {frames}\n"
@@ -507,6 +501,15 @@ pub fn docs_page_from(existing: &str, tables: &str) -> String {
         _ if existing.trim().is_empty() => format!("# Tracer measurements\n\n{block}"),
         // A page of prose with no block yet: the block goes at its end.
         _ => format!("{}\n\n{block}", existing.trim_end()),
+    }
+}
+
+/// How a table's figures combine frames: "one frame" or "RMS over k
+/// frames".
+fn frames_label(frames: u32) -> String {
+    match frames {
+        1 => "one frame".to_owned(),
+        k => format!("RMS over {k} frames"),
     }
 }
 
