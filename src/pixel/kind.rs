@@ -139,9 +139,10 @@ impl PixelSamplerKind {
                 AnyPixelSampler::BlueNoise(BlueNoise::new(samples_per_pixel, resolution, frame)?)
             }
             PixelSamplerKind::Orthogonal => {
-                // Strength 2 has q + 1 columns: ask for 3, read q back.
-                let levels = OrthogonalArray::new(samples_per_pixel, 3, 2)?.levels();
-                let array = OrthogonalArray::new(samples_per_pixel, levels + 1, 2)?;
+                // Every column strength 2 has: ask for 3 (any q has them),
+                // then for all of them.
+                let most = OrthogonalArray::new(samples_per_pixel, 3, 2)?.max_dimensions();
+                let array = OrthogonalArray::new(samples_per_pixel, most, 2)?;
                 AnyPixelSampler::Orthogonal(PaddedNd::new(array, frame))
             }
             PixelSamplerKind::LatinHypercube => {

@@ -407,16 +407,7 @@ pub fn trade_plot_svg(title: &str, series: &[Series<'_>], target: f64) -> String
                 escape(s.name)
             );
         }
-        let ly = TOP + 10.0 + i as f64 * 18.0;
-        let lx = LEFT + plot_w + 14.0;
-        let _ = writeln!(
-            svg,
-            r#"<line x1="{lx}" y1="{ly}" x2="{}" y2="{ly}" stroke="{colour}" stroke-width="3"/><text x="{}" y="{}">{}</text>"#,
-            lx + 20.0,
-            lx + 26.0,
-            ly + 4.0,
-            escape(s.name)
-        );
+        legend_entry(&mut svg, i, plot_w, colour, s.name);
     }
     let _ = writeln!(
         svg,
@@ -480,16 +471,7 @@ pub fn spectrum_svg(title: &str, series: &[(&str, Vec<f64>)]) -> String {
             r#"<polyline points="{}" fill="none" stroke="{colour}" stroke-width="2"/>"#,
             points.join(" ")
         );
-        let ly = TOP + 10.0 + i as f64 * 18.0;
-        let lx = LEFT + plot_w + 14.0;
-        let _ = writeln!(
-            svg,
-            r#"<line x1="{lx}" y1="{ly}" x2="{}" y2="{ly}" stroke="{colour}" stroke-width="3"/><text x="{}" y="{}">{}</text>"#,
-            lx + 20.0,
-            lx + 26.0,
-            ly + 4.0,
-            escape(name)
-        );
+        legend_entry(&mut svg, i, plot_w, colour, name);
     }
     svg.push_str("</svg>\n");
     svg
@@ -505,6 +487,21 @@ fn escape(text: &str) -> String {
     text.replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")
+}
+
+/// Entry `i` of a plot's legend, right of a plot `plot_w` wide: a line in
+/// `colour` and the series' name.
+fn legend_entry(svg: &mut String, i: usize, plot_w: f64, colour: &str, name: &str) {
+    let ly = TOP + 10.0 + i as f64 * 18.0;
+    let lx = LEFT + plot_w + 14.0;
+    let _ = writeln!(
+        svg,
+        r#"<line x1="{lx}" y1="{ly}" x2="{}" y2="{ly}" stroke="{colour}" stroke-width="3"/><text x="{}" y="{}">{}</text>"#,
+        lx + 20.0,
+        lx + 26.0,
+        ly + 4.0,
+        escape(name)
+    );
 }
 
 #[cfg(test)]
