@@ -45,52 +45,35 @@ const EDGE_Z: Vec3 = Vec3::new(0.0, 0.0, 1.0);
 const EMITTED: f32 = 6.0;
 const SKY: Vec3 = Vec3::new(0.05, 0.07, 0.1);
 const SPHERE: (Vec3, f32) = (Vec3::new(0.0, 0.6, 0.0), 0.6);
+const RED: Vec3 = Vec3::new(0.8, 0.3, 0.2); // the sphere
+const GREY: Vec3 = Vec3::splat(0.7); // the floor
 const EYE: Vec3 = Vec3::new(0.0, 1.0, 3.5);
 const FOCUS: f32 = 3.5; // the sphere is in focus
 const APERTURE: f32 = 0.05; // lens radius
 
-struct Hit {
-    point: Vec3,
-    normal: Vec3,
-    albedo: Vec3,
-    light: bool,
-}
-
-/// The nearest surface along `origin + t dir`, `t > 1e-4`.
-fn intersect(origin: Vec3, dir: Vec3) -> Option<Hit> {
-    let mut best: Option<(f32, Hit)> = None;
-    let mut keep = |t: f32, normal: Vec3, albedo: Vec3, light: bool| {
-        if t > 1e-4 && t.is_finite() && best.as_ref().is_none_or(|(b, _)| t < *b) {
-            let point = origin + t * dir;
-            best = Some((
-                t,
-                Hit {
-                    point,
-                    normal,
-                    albedo,
-                    light,
-                },
-            ));
-        }
-    };
+/// The nearest surface along `origin + t dir` with `t > 1e-4`: its `t`,
+/// normal and albedo, and whether it is the light.
+fn intersect(origin: Vec3, dir: Vec3) -> Option<(f32, Vec3, Vec3, bool)> {
     let (centre, radius) = SPHERE;
     let oc = origin - centre;
     let (b, c) = (oc.dot(dir), oc.length_squared() - radius * radius);
-    if b * b >= c {
-        let t = -b - (b * b - c).sqrt();
-        let normal = (origin + t * dir - centre) / radius;
-        keep(t, normal, Vec3::new(0.8, 0.3, 0.2), false);
-    }
+    let sphere = -b - (b * b - c).sqrt(); // NaN on a miss
     // The floor (y = 0, 8 x 8) and the light (its underside).
     let (floor, ceiling) = (-origin.y / dir.y, (CORNER.y - origin.y) / dir.y);
     let (p, q) = (origin + floor * dir, origin + ceiling * dir - CORNER);
-    if p.x.abs().max(p.z.abs()) < 4.0 {
-        keep(floor, Vec3::Y, Vec3::splat(0.7), false);
-    }
-    if (0.0..1.0).contains(&q.x) && (0.0..1.0).contains(&q.z) && dir.y > 0.0 {
-        keep(ceiling, Vec3::NEG_Y, Vec3::ZERO, true);
-    }
-    best.map(|(_, hit)| hit)
+    let on_floor = p.x.abs().max(p.z.abs()) < 4.0;
+    let on_light = (0.0..1.0).contains(&q.x) && (0.0..1.0).contains(&q.z) && dir.y > 0.0;
+    let floor = if on_floor { floor } else { f32::NAN };
+    let ceiling = if on_light { ceiling } else { f32::NAN };
+    let sphere_normal = (oc + sphere * dir) / radius;
+    [
+        (sphere, sphere_normal, RED, false),
+        (floor, Vec3::Y, GREY, false),
+        (ceiling, Vec3::NEG_Y, Vec3::ZERO, true),
+    ]
+    .into_iter()
+    .filter(|&(t, ..)| t > 1e-4 && t.is_finite())
+    .min_by(|a, b| a.0.total_cmp(&b.0))
 }
 
 /// One path of the pixel sample whose root domain is `root`, passed by
@@ -107,24 +90,25 @@ fn radiance<S: PixelSampler + Copy>(mut root: Domain<S>, pixel: [u32; 2]) -> Vec
     let mut dir = (focus - origin).normalize();
     let (mut throughput, mut sum) = (Vec3::ONE, Vec3::ZERO);
     for b in 0..BOUNCES {
-        let Some(hit) = intersect(origin, dir) else {
+        let Some((t, normal, albedo, light)) = intersect(origin, dir) else {
             return sum + throughput * SKY;
         };
-        if hit.light {
+        let point = origin + t * dir;
+        if light {
             // Seen directly; later bounces counted the light by sampling it.
             return sum + Vec3::splat(if b == 0 { EMITTED } else { 0.0 });
         }
         // Bounce b's draws never depend on what the bounces before it drew.
         let mut bounce = root.branch(BOUNCE).branch(b);
-        let brdf = hit.albedo / PI;
+        let brdf = albedo / PI;
         for j in 0..LIGHT_SAMPLES {
             // Sub-sample j of LIGHT_SAMPLES: together, a stratified set.
             let u = bounce.split(LIGHT, LIGHT_SAMPLES, j).next_2d();
             let on_light = warp::rectangle(u, CORNER, EDGE_X, EDGE_Z);
-            let to_light = on_light - hit.point;
+            let to_light = on_light - point;
             let (distance2, wi) = (to_light.length_squared(), to_light.normalize());
-            let (cos_surface, cos_light) = (hit.normal.dot(wi), wi.y);
-            let shadowed = intersect(hit.point, wi).is_some_and(|h| !h.light);
+            let (cos_surface, cos_light) = (normal.dot(wi), wi.y);
+            let shadowed = intersect(point, wi).is_some_and(|(.., light)| !light);
             if cos_surface > 0.0 && cos_light > 0.0 && !shadowed {
                 // The area pdf turned into a solid-angle pdf.
                 let pdf = warp::rectangle_pdf(EDGE_X, EDGE_Z) * distance2 / cos_light;
@@ -134,25 +118,21 @@ fn radiance<S: PixelSampler + Copy>(mut root: Domain<S>, pixel: [u32; 2]) -> Vec
         // The next direction: cosine-weighted about the normal.
         let local = warp::cosine_hemisphere(bounce.next_2d());
         let pdf = warp::cosine_hemisphere_pdf(local.z);
-        let (tangent, bitangent) = hit.normal.any_orthonormal_pair();
-        dir = (local.x * tangent + local.y * bitangent + local.z * hit.normal).normalize();
+        let (tangent, bitangent) = normal.any_orthonormal_pair();
+        dir = (local.x * tangent + local.y * bitangent + local.z * normal).normalize();
         throughput *= brdf * local.z / pdf;
-        origin = hit.point;
+        origin = point;
     }
     sum
 }
 
 fn main() -> ExitCode {
     let args = Args::parse();
-    let sampler = match args.sampler.build(args.spp, SIZE, args.frame) {
-        Ok(sampler) => sampler,
-        Err(e) => {
-            eprintln!(
-                "path_tracer: --sampler {} --spp {}: {e}",
-                args.sampler, args.spp
-            );
-            return ExitCode::from(2);
-        }
+    let (kind, spp) = (args.sampler, args.spp);
+    let Ok(sampler) = kind.build(spp, SIZE, args.frame).inspect_err(|e| {
+        eprintln!("path_tracer: --sampler {kind} --spp {spp}: {e}");
+    }) else {
+        return ExitCode::from(2);
     };
     let mut bytes = Vec::with_capacity((SIZE[0] * SIZE[1] * 3) as usize);
     // Gamma 2.2, clamped to 8 bits.
@@ -165,16 +145,12 @@ fn main() -> ExitCode {
             bytes.extend((sum / args.spp as f32).to_array().map(encode));
         }
     }
-    match write_png(&args.out, &bytes) {
-        Ok(()) => {
-            println!("{}", args.out.display());
-            ExitCode::SUCCESS
-        }
-        Err(e) => {
-            eprintln!("path_tracer: {}: {e}", args.out.display());
-            ExitCode::FAILURE
-        }
+    if let Err(e) = write_png(&args.out, &bytes) {
+        eprintln!("path_tracer: {}: {e}", args.out.display());
+        return ExitCode::FAILURE;
     }
+    println!("{}", args.out.display());
+    ExitCode::SUCCESS
 }
 
 /// Writes the RGB `bytes` as a PNG at `path`, making its folder if missing.
