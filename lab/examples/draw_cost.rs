@@ -13,10 +13,94 @@
 //! alone) and divide by 2^16 for the count per pixel sample;
 //! `docs/performance.md` lists them.
 
+use std::ffi::OsString;
 use std::hint::black_box;
 use std::process::ExitCode;
 
+use clap::Parser;
 use wellspread::{AnyPixelSampler, AnySampler, Padded, PixelSampler, PixelSamplerKind};
+
+#[path = "shared/cli.rs"]
+pub mod shared;
+
+use shared::Failure;
+
+/// A fixed workload of `Domain` draws, for `valgrind --tool=callgrind`.
+#[derive(Parser, Debug)]
+pub struct Args {
+    /// A pixel sampler's name (sobol, blue-noise, cmj, ...), or `unit`
+    /// for the bench's PCG unit
+    #[arg(value_name = "SAMPLER", value_parser = back_end)]
+    pub back_end: BackEnd,
+    /// What each pixel sample does: 1d, 2d, 4d, path, none or loop, with
+    /// `-any` to go through AnyPixelSampler (2d-any)
+    #[arg(value_name = "WORKLOAD", value_parser = workload)]
+    pub workload: (Workload, bool),
+}
+
+/// What is measured: a pixel sampler, or the unit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BackEnd {
+    Unit,
+    Sampler(PixelSamplerKind),
+}
+
+/// The work per pixel sample.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Workload {
+    /// `start` and one `next_1d`.
+    OneD,
+    /// `start` and one `next_2d`.
+    TwoD,
+    /// `start` and one `next_4d`.
+    FourD,
+    /// `start` and the bench's nine keyed draws.
+    Path,
+    /// `start` alone.
+    None,
+    /// The inputs alone, the count to subtract.
+    Loop,
+}
+
+fn back_end(text: &str) -> Result<BackEnd, String> {
+    if text == "unit" {
+        return Ok(BackEnd::Unit);
+    }
+    text.parse()
+        .map(BackEnd::Sampler)
+        .map_err(|e| format!("{e}"))
+}
+
+fn workload(text: &str) -> Result<(Workload, bool), String> {
+    let (name, through_any) = match text.strip_suffix("-any") {
+        Some(name) => (name, true),
+        None => (text, false),
+    };
+    let workload = match name {
+        "1d" => Workload::OneD,
+        "2d" => Workload::TwoD,
+        "4d" => Workload::FourD,
+        "path" => Workload::Path,
+        "none" => Workload::None,
+        "loop" => Workload::Loop,
+        _ => {
+            return Err(format!(
+                "{} is not one of 1d, 2d, 4d, path, none, loop (each may end in -any)",
+                shared::quoted(text)
+            ));
+        }
+    };
+    Ok((workload, through_any))
+}
+
+/// Parses the arguments (without the program name): `Ok(None)` when the
+/// help was written to `out`.
+pub fn parse(
+    args: impl IntoIterator<Item = OsString>,
+    out: &mut dyn std::io::Write,
+) -> Result<Option<Args>, Failure> {
+    shared::parse::<Args>("draw_cost", shared::EXIT_CODES, args, out)
+}
 
 const SAMPLES: u32 = 1 << 16;
 
@@ -26,9 +110,9 @@ fn unit(x: u32) -> u32 {
     (word >> 22) ^ word
 }
 
-fn run<P: PixelSampler + Copy>(sampler: P, workload: &str, inputs: &[([u32; 2], u32)]) -> f32 {
+fn run<P: PixelSampler + Copy>(sampler: P, workload: Workload, inputs: &[([u32; 2], u32)]) -> f32 {
     let mut acc = 0.0;
-    if workload == "loop" {
+    if workload == Workload::Loop {
         return inputs
             .iter()
             .map(|&(p, i)| black_box(p[0] ^ p[1] ^ i) as f32)
@@ -37,10 +121,10 @@ fn run<P: PixelSampler + Copy>(sampler: P, workload: &str, inputs: &[([u32; 2], 
     for &(pixel, index) in inputs {
         let mut d = sampler.start(pixel, index);
         acc += match workload {
-            "1d" => d.next_1d(),
-            "2d" => d.next_2d().x,
-            "4d" => d.next_4d().w,
-            "path" => {
+            Workload::OneD => d.next_1d(),
+            Workload::TwoD => d.next_2d().x,
+            Workload::FourD => d.next_4d().w,
+            Workload::Path => {
                 let mut s = 0.0;
                 for b in 0..3 {
                     let mut bounce = d.branch(1).branch(b);
@@ -48,7 +132,7 @@ fn run<P: PixelSampler + Copy>(sampler: P, workload: &str, inputs: &[([u32; 2], 
                 }
                 s
             }
-            _ => 0.0,
+            Workload::None | Workload::Loop => 0.0,
         };
         black_box(&d);
     }
@@ -56,13 +140,12 @@ fn run<P: PixelSampler + Copy>(sampler: P, workload: &str, inputs: &[([u32; 2], 
 }
 
 fn main() -> ExitCode {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let [name, workload] = args.as_slice() else {
-        eprintln!(
-            "usage: draw_cost <pixel sampler | unit> <1d | 2d | 4d | path | none | loop>[-any]"
-        );
-        return ExitCode::from(2);
+    let args = match parse(std::env::args_os().skip(1), &mut std::io::stdout().lock()) {
+        Ok(Some(args)) => args,
+        Ok(None) => return ExitCode::SUCCESS,
+        Err(failure) => return shared::exit("draw_cost", Err(failure)),
     };
+    let ((workload, through_any), back_end) = (args.workload, args.back_end);
     let mut x = 0x5eed_u32;
     let inputs: Vec<([u32; 2], u32)> = (0..SAMPLES)
         .map(|_| {
@@ -70,61 +153,63 @@ fn main() -> ExitCode {
             ([x % 1920, (x >> 11) % 1080], x >> 28)
         })
         .collect();
-    let (workload, through_any) = match workload.strip_suffix("-any") {
-        Some(w) => (w, true),
-        None => (workload.as_str(), false),
-    };
-    let total = if name == "unit" {
-        let draws = if workload == "path" { 9 } else { 1 };
-        inputs
-            .iter()
-            .map(|&([px, py], i)| {
-                (0..draws)
-                    .map(|d| {
-                        let seed = px
-                            ^ py.wrapping_mul(0x9e37_79b9)
-                            ^ i.wrapping_mul(0x85eb_ca6b)
-                            ^ (d as u32).wrapping_mul(0xc2b2_ae35);
-                        let a = unit(seed);
-                        black_box((a >> 8) as f32 + (unit(a) >> 8) as f32)
-                    })
-                    .sum::<f32>()
-            })
-            .sum::<f32>()
-    } else {
-        let kind: PixelSamplerKind = match name.parse() {
-            Ok(kind) => kind,
-            Err(e) => {
-                eprintln!("draw_cost: {e}");
-                return ExitCode::from(2);
-            }
-        };
-        let any: AnyPixelSampler = kind.build(16, [1920, 1080], 0).expect("16 spp builds");
-        if through_any {
-            run(any, workload, &inputs)
-        } else {
-            // The concrete type of every kind: no wildcard, so a new kind
-            // does not compile until it has its line.
-            match any {
-                AnyPixelSampler::Padded(p) => match *p.sampler() {
-                    AnySampler::Regular(s) => run(Padded::new(s, 0), workload, &inputs),
-                    AnySampler::Random(s) => run(Padded::new(s, 0), workload, &inputs),
-                    AnySampler::Jittered(s) => run(Padded::new(s, 0), workload, &inputs),
-                    AnySampler::NRooks(s) => run(Padded::new(s, 0), workload, &inputs),
-                    AnySampler::MultiJittered(s) => run(Padded::new(s, 0), workload, &inputs),
-                    AnySampler::CorrelatedMultiJittered(s) => {
-                        run(Padded::new(s, 0), workload, &inputs)
-                    }
-                    AnySampler::BlueMultiJittered(s) => run(Padded::new(s, 0), workload, &inputs),
-                    AnySampler::Hammersley(s) => run(Padded::new(s, 0), workload, &inputs),
-                    AnySampler::Halton(s) => run(Padded::new(s, 0), workload, &inputs),
-                    AnySampler::Sobol(s) => run(Padded::new(s, 0), workload, &inputs),
-                    AnySampler::Pmj02(s) => run(Padded::new(s, 0), workload, &inputs),
-                },
-                AnyPixelSampler::ZSobol(s) => run(s, workload, &inputs),
-                AnyPixelSampler::BlueNoise(s) => run(s, workload, &inputs),
-                AnyPixelSampler::Orthogonal(s) => run(s, workload, &inputs),
-                AnyPixelSampler::LatinHypercube(s) => run(s, workload, &inputs),
+    let total = match back_end {
+        BackEnd::Unit => {
+            let draws = if workload == Workload::Path { 9 } else { 1 };
+            inputs
+                .iter()
+                .map(|&([px, py], i)| {
+                    (0..draws)
+                        .map(|d| {
+                            let seed = px
+                                ^ py.wrapping_mul(0x9e37_79b9)
+                                ^ i.wrapping_mul(0x85eb_ca6b)
+                                ^ (d as u32).wrapping_mul(0xc2b2_ae35);
+                            let a = unit(seed);
+                            black_box((a >> 8) as f32 + (unit(a) >> 8) as f32)
+                        })
+                        .sum::<f32>()
+                })
+                .sum::<f32>()
+        }
+        BackEnd::Sampler(kind) => {
+            let any = match kind.build(16, [1920, 1080], 0) {
+                Ok(any) => any,
+                Err(e) => {
+                    return shared::exit(
+                        "draw_cost",
+                        Err(Failure::Input(format!("{kind} at 16 spp: {e}"))),
+                    );
+                }
+            };
+            if through_any {
+                run(any, workload, &inputs)
+            } else {
+                // The concrete type of every kind: no wildcard, so a new kind
+                // does not compile until it has its line.
+                match any {
+                    AnyPixelSampler::Padded(p) => match *p.sampler() {
+                        AnySampler::Regular(s) => run(Padded::new(s, 0), workload, &inputs),
+                        AnySampler::Random(s) => run(Padded::new(s, 0), workload, &inputs),
+                        AnySampler::Jittered(s) => run(Padded::new(s, 0), workload, &inputs),
+                        AnySampler::NRooks(s) => run(Padded::new(s, 0), workload, &inputs),
+                        AnySampler::MultiJittered(s) => run(Padded::new(s, 0), workload, &inputs),
+                        AnySampler::CorrelatedMultiJittered(s) => {
+                            run(Padded::new(s, 0), workload, &inputs)
+                        }
+                        AnySampler::BlueMultiJittered(s) => {
+                            run(Padded::new(s, 0), workload, &inputs)
+                        }
+                        AnySampler::Hammersley(s) => run(Padded::new(s, 0), workload, &inputs),
+                        AnySampler::Halton(s) => run(Padded::new(s, 0), workload, &inputs),
+                        AnySampler::Sobol(s) => run(Padded::new(s, 0), workload, &inputs),
+                        AnySampler::Pmj02(s) => run(Padded::new(s, 0), workload, &inputs),
+                    },
+                    AnyPixelSampler::ZSobol(s) => run(s, workload, &inputs),
+                    AnyPixelSampler::BlueNoise(s) => run(s, workload, &inputs),
+                    AnyPixelSampler::Orthogonal(s) => run(s, workload, &inputs),
+                    AnyPixelSampler::LatinHypercube(s) => run(s, workload, &inputs),
+                }
             }
         }
     };

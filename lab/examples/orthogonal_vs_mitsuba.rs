@@ -36,12 +36,44 @@
 //! samplers padded pair by pair (a new pattern per pair of dimensions).
 
 use std::collections::BTreeMap;
+use std::ffi::OsString;
 use std::fmt::Write as _;
+use std::io::Write as _;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
 
+use clap::Parser;
 use wellspread::primitives::hash_combine;
 use wellspread::{
     LatinHypercube, OrthogonalArray, OrthogonalArrayOffset, Random, Sampler2D, SamplerNd, Sobol,
 };
+
+#[path = "shared/cli.rs"]
+pub mod shared;
+
+use shared::Failure;
+
+/// The N-dimensional sets against Mitsuba 3's `orthogonal` sampler (the
+/// table of docs/quality.md on standard output; about a minute).
+#[derive(Parser, Debug)]
+pub struct Args {
+    /// Mitsuba's figures, as written by orthogonal_vs_mitsuba.py; without
+    /// it the Mitsuba columns are left out
+    #[arg(value_name = "CSV")]
+    pub csv: Option<PathBuf>,
+    /// Also draw the 2D projections of three dimension pairs into this SVG
+    #[arg(long, value_name = "FILE")]
+    pub svg: Option<PathBuf>,
+}
+
+/// Parses the arguments (without the program name): `Ok(None)` when the
+/// help was written to `out`.
+pub fn parse(
+    args: impl IntoIterator<Item = OsString>,
+    out: &mut dyn std::io::Write,
+) -> Result<Option<Args>, Failure> {
+    shared::parse::<Args>("orthogonal_vs_mitsuba", shared::EXIT_CODES, args, out)
+}
 
 /// Patterns (pixels) per RMSE: a relative standard error of about
 /// `1 / sqrt(2 * 1024)`, 2.2%.
@@ -192,23 +224,38 @@ fn samplers(n: u32) -> Vec<(String, Box<dyn Fill>)> {
     list
 }
 
-/// Mitsuba's figures from the Python script's CSV: `(requested, integrand)
-/// -> (used, rmse)`.
-fn read_mitsuba(path: &str) -> BTreeMap<(u32, String), (u32, f64)> {
-    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{path}: {e}"));
+/// Mitsuba's figures: `(requested n, integrand) -> (n it rendered, RMSE)`.
+pub type MitsubaTable = BTreeMap<(u32, String), (u32, f64)>;
+
+/// Reads the Python script's CSV; a line that is not four fields with a
+/// finite RMSE is an input error naming the line.
+pub fn read_mitsuba(path: &Path) -> Result<MitsubaTable, Failure> {
+    let text = shared::read_page(path)?;
     let mut table = BTreeMap::new();
-    for line in text.lines().skip(1) {
+    for (number, line) in text.lines().enumerate().skip(1) {
         let fields: Vec<&str> = line.split(',').collect();
-        if let [requested, used, integrand, rmse] = fields[..] {
-            let (Ok(requested), Ok(used), Ok(rmse)) =
-                (requested.parse(), used.parse(), rmse.parse())
-            else {
-                panic!("{path}: bad line {line:?}");
-            };
-            table.insert((requested, integrand.to_owned()), (used, rmse));
-        }
+        let parsed = match fields[..] {
+            [requested, used, integrand, rmse] => {
+                match (requested.parse(), used.parse(), rmse.parse::<f64>()) {
+                    (Ok(requested), Ok(used), Ok(rmse)) if rmse.is_finite() => {
+                        Some(((requested, integrand.to_owned()), (used, rmse)))
+                    }
+                    _ => None,
+                }
+            }
+            _ => None,
+        };
+        let Some((key, value)) = parsed else {
+            return Err(Failure::Input(format!(
+                "{} line {}: {} is not `requested,used,integrand,rmse`",
+                path.display(),
+                number + 1,
+                shared::quoted(line)
+            )));
+        };
+        table.insert(key, value);
     }
-    table
+    Ok(table)
 }
 
 /// The least-squares slope of `ln rmse` against `ln n`.
@@ -324,20 +371,24 @@ fn projections_svg() -> String {
     svg
 }
 
-fn main() {
-    let mut args = std::env::args().skip(1);
-    let (mut csv, mut svg) = (None, None);
-    while let Some(arg) = args.next() {
-        if arg == "--svg" {
-            svg = Some(args.next().expect("--svg needs a file name"));
-        } else {
-            csv = Some(arg);
-        }
+fn main() -> ExitCode {
+    let result = match parse(std::env::args_os().skip(1), &mut std::io::stdout().lock()) {
+        Ok(Some(args)) => run(&args),
+        Ok(None) => Ok(()),
+        Err(failure) => Err(failure),
+    };
+    shared::exit("orthogonal_vs_mitsuba", result)
+}
+
+/// Measures every set, writes the SVG if asked, and prints the tables.
+fn run(args: &Args) -> Result<(), Failure> {
+    // Inputs and outputs are checked before the minute of measuring.
+    let mitsuba = args.csv.as_deref().map(read_mitsuba).transpose()?;
+    if let Some(path) = &args.svg {
+        let mut file = shared::create_file(path)?;
+        file.write_all(projections_svg().as_bytes())
+            .map_err(|e| Failure::Io(format!("cannot write {}: {e}", path.display())))?;
     }
-    if let Some(path) = svg {
-        std::fs::write(&path, projections_svg()).unwrap_or_else(|e| panic!("{path}: {e}"));
-    }
-    let mitsuba = csv.map(|path| read_mitsuba(&path));
     let integrands = integrands();
     // (n, column) -> RMSE per integrand.
     let mut results: BTreeMap<(u32, String), Vec<f64>> = BTreeMap::new();
@@ -459,5 +510,7 @@ fn main() {
             writeln!(out, "| {n} | {used_by_mitsuba} |{row}").unwrap();
         }
     }
-    print!("{out}");
+    std::io::stdout()
+        .write_all(out.as_bytes())
+        .map_err(|e| Failure::Io(format!("cannot write the table: {e}")))
 }
