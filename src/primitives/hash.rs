@@ -24,7 +24,7 @@ pub const fn hash_u32(mut x: u32) -> u32 {
 pub const fn hash_combine(seed: u32, value: u32) -> u32 {
     // The golden-ratio constant 0x9e3779b9 keeps (seed, 0) from hashing like
     // a bare seed; hashing `value` first spreads small consecutive values.
-    hash_u32(seed ^ hash_u32(value).wrapping_add(0x9e37_79b9))
+    hash_u32(seed ^ hash_u32(value).wrapping_add(salt::GOLDEN_32))
 }
 
 /// The 64-bit finaliser of SplitMix64 (Steele, Lea & Flood 2014, "Fast
@@ -182,6 +182,36 @@ pub(crate) mod salt {
     /// [`Sobol4D`](crate::Sobol4D) pattern's stream (fraction bits of
     /// sqrt(37)).
     pub(crate) const SOBOL_SET: u64 = 0x152f_ecd8_f70e_5939;
+
+    /// The golden ratio's fraction bits in 32 bits (odd, about half its
+    /// bits set): the step between Halton's per-level seeds, the
+    /// multiplier that spreads multi-jitter's line numbers over all 32
+    /// bits, and the offset of [`hash_combine`](super::hash_combine) and of
+    /// a bare pattern's permutation key.
+    pub(crate) const GOLDEN_32: u32 = 0x9e37_79b9;
+
+    /// The N-dimensional sets' choices, per pattern or per dimension key
+    /// (`samplers::nd`): the Latin hypercube's stratum permutation and the
+    /// orthogonal array's level permutation.
+    pub(crate) const ND_STRATA: u32 = 0x3b9e_6d27;
+    /// The orthogonal array's sub-stratum permutation (multi-jittered
+    /// offsets).
+    pub(crate) const ND_SUB_STRATA: u32 = 0x7a2f_c639;
+    /// The orthogonal array's choice of columns.
+    pub(crate) const ND_COLUMNS: u32 = 0x5e83_b1d5;
+    /// The orthogonal array's row order.
+    pub(crate) const ND_ROWS: u32 = 0x9647_e2a9;
+    /// Where inside its stratum an N-dimensional coordinate lands.
+    pub(crate) const ND_JITTER: u32 = 0xd1c5_8a4b;
+
+    /// Blue multi-jitter's per-pattern placement of its lattice: the
+    /// offsets and shifts of the cells, and the mirror and transpose flags
+    /// (the top bits of the flags' key).
+    pub(crate) const LATTICE_OFFSET_X: u32 = 0x2f6b_4a93;
+    pub(crate) const LATTICE_OFFSET_Y: u32 = 0x4c1d_e357;
+    pub(crate) const LATTICE_SHIFT_X: u32 = 0x6a3c_95e1;
+    pub(crate) const LATTICE_SHIFT_Y: u32 = 0x8e57_1ab3;
+    pub(crate) const LATTICE_FLAGS: u32 = 0xb4d2_6c8f;
 }
 
 #[cfg(test)]
@@ -216,6 +246,17 @@ mod tests {
             salt::SOBOL_Z,
             salt::SOBOL_W,
             salt::DRAW_ORDER,
+            salt::GOLDEN_32,
+            salt::ND_STRATA,
+            salt::ND_SUB_STRATA,
+            salt::ND_COLUMNS,
+            salt::ND_ROWS,
+            salt::ND_JITTER,
+            salt::LATTICE_OFFSET_X,
+            salt::LATTICE_OFFSET_Y,
+            salt::LATTICE_SHIFT_X,
+            salt::LATTICE_SHIFT_Y,
+            salt::LATTICE_FLAGS,
         ];
         for (i, a) in u64s.iter().enumerate() {
             assert!(u64s[i + 1..].iter().all(|b| a != b), "{a:#x} twice");
@@ -233,6 +274,36 @@ mod tests {
                     == 1
             )
         };
+    }
+
+    /// `derived_key` rotates by a salt's top five bits: salts that key
+    /// permutations of one hash must differ there, or two of their keys
+    /// would differ by a bare xor.
+    #[test]
+    fn derived_key_salts_differ_in_their_top_five_bits() {
+        let groups: [&[u32]; 3] = [
+            &[salt::ORDER, salt::SHUFFLE_X, salt::SHUFFLE_Y],
+            &[
+                salt::ND_STRATA,
+                salt::ND_SUB_STRATA,
+                salt::ND_COLUMNS,
+                salt::ND_ROWS,
+            ],
+            &[
+                salt::LATTICE_OFFSET_X,
+                salt::LATTICE_OFFSET_Y,
+                salt::LATTICE_SHIFT_X,
+                salt::LATTICE_SHIFT_Y,
+                salt::LATTICE_FLAGS,
+            ],
+        ];
+        for group in groups {
+            for (i, a) in group.iter().enumerate() {
+                for b in &group[i + 1..] {
+                    assert_ne!(a >> 27, b >> 27, "{a:#x} and {b:#x}");
+                }
+            }
+        }
     }
 
     #[test]

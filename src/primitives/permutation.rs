@@ -23,7 +23,7 @@
 //!   power-of-two length never walks. Lane-parallel callers re-hash only
 //!   the lanes still outside, so a batch stays branch-free per lane.
 
-use super::hash::hash_u32;
+use super::hash::{hash_u32, salt};
 
 /// The longest permutation built as an exact Fisher-Yates shuffle: eight
 /// nibbles fill a u32, and `8! = 40,320` leaves the key's 2^32 values
@@ -139,7 +139,7 @@ const fn shuffle_round(x: u32, k: u32, mask: u32, half: u32) -> u32 {
 /// ratio's fraction bits, as in [`hash_combine`](super::hash_combine).
 #[inline(always)]
 const fn permute_key(pattern: u32) -> u32 {
-    hash_u32(pattern ^ 0x9e37_79b9)
+    hash_u32(pattern ^ salt::GOLDEN_32)
 }
 
 /// The key of one of several permutations drawn from one `pattern_hash`,

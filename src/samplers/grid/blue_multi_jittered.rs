@@ -1,7 +1,7 @@
 use glam::Vec2;
 
 use super::{CellOffset, Grid, GridPattern, Jitter, fill_grid};
-use crate::primitives::{InvariantDivisor, MAX_STRATA, Permutation, derived_key, hash_u32};
+use crate::primitives::{InvariantDivisor, MAX_STRATA, Permutation, derived_key, hash_u32, salt};
 use crate::traits::{DomainSampler, Sampler2D};
 use crate::{Error, SamplerKind};
 
@@ -130,17 +130,6 @@ impl Lattice {
     }
 }
 
-/// Salts for the per-pattern choices, in the style of the crate's salts: odd, about
-/// half their bits set, distinct top five bits (the rotation
-/// [`derived_key`] applies).
-mod choice {
-    pub(super) const OFFSET_X: u32 = 0x2f6b_4a93;
-    pub(super) const OFFSET_Y: u32 = 0x4c1d_e357;
-    pub(super) const SHIFT_X: u32 = 0x6a3c_95e1;
-    pub(super) const SHIFT_Y: u32 = 0x8e57_1ab3;
-    pub(super) const FLAGS: u32 = 0xb4d2_6c8f;
-}
-
 impl BlueMultiJittered {
     /// The largest `n` accepted: 2^24, the number of distinct f32 strata.
     pub const MAX_SAMPLES: u32 = MAX_STRATA;
@@ -199,15 +188,15 @@ impl BlueMultiJittered {
         let pick = |salt: u32, len: u32| {
             ((derived_key(pattern_hash, salt) as u64 * len as u64) >> 32) as u32
         };
-        let flags = derived_key(pattern_hash, choice::FLAGS);
+        let flags = derived_key(pattern_hash, salt::LATTICE_FLAGS);
         BlueMultiJitteredPattern {
             grid,
             lattice: self.lattice,
             order: grid.cell_order(pattern_hash),
-            offset_x: pick(choice::OFFSET_X, rows),
-            offset_y: pick(choice::OFFSET_Y, columns),
-            shift_x: pick(choice::SHIFT_X, columns),
-            shift_y: pick(choice::SHIFT_Y, rows),
+            offset_x: pick(salt::LATTICE_OFFSET_X, rows),
+            offset_y: pick(salt::LATTICE_OFFSET_Y, columns),
+            shift_x: pick(salt::LATTICE_SHIFT_X, columns),
+            shift_y: pick(salt::LATTICE_SHIFT_Y, rows),
             // The top bits: derived keys are weakest in their low bits.
             mirror_x: flags >> 31 == 1,
             mirror_y: (flags >> 30) & 1 == 1,

@@ -240,7 +240,7 @@ impl<S: LineShuffles> GridPattern for MultiJitteredPattern<'_, S> {
 /// consecutive lines over all 32 bits first).
 #[inline(always)]
 const fn line_key(seed: u32, line: u32) -> u32 {
-    hash_u32(seed ^ line.wrapping_mul(0x9e37_79b9))
+    hash_u32(seed ^ line.wrapping_mul(salt::GOLDEN_32))
 }
 
 impl MultiJittered {

@@ -1,7 +1,7 @@
-use super::{check_dimensions, debug_check_dimension, dimension_key, reduce_index, salt};
+use super::{check_dimensions, debug_check_dimension, dimension_key, reduce_index};
 use crate::Error;
 use crate::primitives::{
-    InvariantDivisor, MAX_STRATA, Permutation, derived_key, hash_u32, rand_u32,
+    InvariantDivisor, MAX_STRATA, Permutation, derived_key, hash_u32, rand_u32, salt,
 };
 use crate::traits::{SamplerNd, check_nd_out};
 
@@ -135,8 +135,9 @@ impl LatinHypercube {
     fn coordinate_of(&self, index: u32, pattern_hash: u32, dimension: u32) -> f32 {
         debug_check_dimension(dimension, self.dimensions);
         let key = dimension_key(pattern_hash, dimension);
-        let stratum = Permutation::new(self.n.get(), derived_key(key, salt::STRATA)).apply(index);
-        let bits = rand_u32(index, key ^ salt::JITTER);
+        let stratum =
+            Permutation::new(self.n.get(), derived_key(key, salt::ND_STRATA)).apply(index);
+        let bits = rand_u32(index, key ^ salt::ND_JITTER);
         self.n.stratum_to_unit_f32(stratum, bits)
     }
 }

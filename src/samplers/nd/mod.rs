@@ -23,23 +23,6 @@ use crate::Error;
 use crate::primitives::{InvariantDivisor, hash_combine};
 use crate::traits::debug_check_index;
 
-/// Salts for the per-pattern and per-dimension choices, in the style of
-/// the crate's salts: odd, about half their bits set, distinct top five
-/// bits (the rotation `derived_key` applies).
-mod salt {
-    /// The Latin hypercube's stratum permutation; the array's level
-    /// permutation.
-    pub(super) const STRATA: u32 = 0x3b9e_6d27;
-    /// The array's sub-stratum permutation (multi-jittered offsets).
-    pub(super) const SUB_STRATA: u32 = 0x7a2f_c639;
-    /// The array's choice of columns.
-    pub(super) const COLUMNS: u32 = 0x5e83_b1d5;
-    /// The array's row order.
-    pub(super) const ROWS: u32 = 0x9647_e2a9;
-    /// Where inside its stratum a coordinate lands.
-    pub(super) const JITTER: u32 = 0xd1c5_8a4b;
-}
-
 /// The key of dimension `dimension` of the pattern whose hash is
 /// `pattern_hash`: every choice made for that dimension alone is derived
 /// from it, so dimensions are as independent as two patterns.

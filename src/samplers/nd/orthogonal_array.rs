@@ -1,8 +1,8 @@
 use super::field::{self, Field, prime_power};
-use super::{check_dimensions, dimension_key, reduce_index, salt};
+use super::{check_dimensions, dimension_key, reduce_index};
 use crate::Error;
 use crate::primitives::{
-    InvariantDivisor, MAX_STRATA, Permutation, derived_key, hash_combine, hash_u32, rand_u32,
+    InvariantDivisor, MAX_STRATA, Permutation, derived_key, hash_combine, hash_u32, rand_u32, salt,
 };
 use crate::traits::{SamplerNd, check_nd_out};
 
@@ -322,8 +322,8 @@ impl OrthogonalArray {
         let hash = hash_u32(pattern);
         ArrayPattern {
             hash,
-            rows: Permutation::new(self.n.get(), derived_key(hash, salt::ROWS)),
-            columns: Permutation::new(self.q.get() + 1, derived_key(hash, salt::COLUMNS)),
+            rows: Permutation::new(self.n.get(), derived_key(hash, salt::ND_ROWS)),
+            columns: Permutation::new(self.q.get() + 1, derived_key(hash, salt::ND_COLUMNS)),
         }
     }
 
@@ -416,14 +416,14 @@ impl OrthogonalArray {
     /// offsets): the level permutation, then the offset.
     #[inline(always)]
     fn place(&self, index: u32, key: u32, value: u32, sub_index: impl FnOnce() -> u32) -> f32 {
-        let level = Permutation::new(self.q.get(), derived_key(key, salt::STRATA)).apply(value);
-        let bits = rand_u32(index, key ^ salt::JITTER);
+        let level = Permutation::new(self.q.get(), derived_key(key, salt::ND_STRATA)).apply(value);
+        let bits = rand_u32(index, key ^ salt::ND_JITTER);
         let sub_key = match self.offset {
             OrthogonalArrayOffset::Jittered => return self.q.stratum_to_unit_f32(level, bits),
             OrthogonalArrayOffset::MultiJittered => {
-                derived_key(hash_combine(key, level), salt::SUB_STRATA)
+                derived_key(hash_combine(key, level), salt::ND_SUB_STRATA)
             }
-            OrthogonalArrayOffset::CorrelatedMultiJittered => derived_key(key, salt::SUB_STRATA),
+            OrthogonalArrayOffset::CorrelatedMultiJittered => derived_key(key, salt::ND_SUB_STRATA),
         };
         let sub = Permutation::new(self.sub.get(), sub_key).apply(sub_index());
         self.n

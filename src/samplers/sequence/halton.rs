@@ -208,7 +208,7 @@ fn scrambled_radical_inverse_3<const N: usize>(index: [u32; N], seed: u32) -> [f
         weight *= 3;
         // A new seed per level (the golden-ratio step, odd and with about
         // half its bits set), so equal prefixes of different lengths differ.
-        level_seed = level_seed.wrapping_add(0x9e37_79b9);
+        level_seed = level_seed.wrapping_add(salt::GOLDEN_32);
     }
     // The remaining index digits and the pattern pick the position inside
     // the finest stratum.
