@@ -9,6 +9,7 @@ use glam::Vec2;
 
 use super::{coord, radix_sort, validate};
 use crate::Error;
+use crate::primitives::morton::morton_64;
 
 /// Smallest Euclidean distance between two points of the set (0 when two
 /// points coincide).
@@ -440,7 +441,7 @@ fn robust_closest_pair_squared(points: &[Vec2], torus: bool) -> f64 {
     let morton_of = |i: u64, shift: u32| {
         let p = points[i as usize];
         let q = |v: f64, lo: f64| (((v - lo) * scale) as u32).min(0x7fff_ffff);
-        morton(q(coord(p.x), lo_x) + shift, q(coord(p.y), lo_y) + shift)
+        morton_64(q(coord(p.x), lo_x) + shift, q(coord(p.y), lo_y) + shift)
     };
 
     // δ0² from pairs adjacent in the z-order of a shift. The first shift
@@ -700,20 +701,6 @@ fn grid_pass(points: &[Vec2], torus: bool, bound: f64, budget: u64) -> Option<f6
         (s, key) = (e, next);
     }
     Some(best)
-}
-
-/// Interleaves the bits of `x` (even positions) and `y` (odd positions).
-fn morton(x: u32, y: u32) -> u64 {
-    fn spread(v: u32) -> u64 {
-        let mut v = u64::from(v);
-        v = (v | (v << 16)) & 0x0000_ffff_0000_ffff;
-        v = (v | (v << 8)) & 0x00ff_00ff_00ff_00ff;
-        v = (v | (v << 4)) & 0x0f0f_0f0f_0f0f_0f0f;
-        v = (v | (v << 2)) & 0x3333_3333_3333_3333;
-        v = (v | (v << 1)) & 0x5555_5555_5555_5555;
-        v
-    }
-    spread(x) | (spread(y) << 1)
 }
 
 #[cfg(test)]

@@ -6,15 +6,17 @@
 /// Even bits of a 32-bit Morton code (the `x` bits).
 pub(crate) const EVEN_BITS: u32 = 0x5555_5555;
 
-/// The low 16 bits of `v` moved to the even positions of a u32.
+/// The bits of `v` moved to the even positions of a u64 (bit `k` to bit
+/// `2 k`).
 #[inline(always)]
 #[must_use]
-pub(crate) const fn spread_16(v: u32) -> u32 {
-    let mut v = v & 0xffff;
-    v = (v | v << 8) & 0x00ff_00ff;
-    v = (v | v << 4) & 0x0f0f_0f0f;
-    v = (v | v << 2) & 0x3333_3333;
-    v = (v | v << 1) & EVEN_BITS;
+const fn spread_32(v: u32) -> u64 {
+    let mut v = v as u64;
+    v = (v | v << 16) & 0x0000_ffff_0000_ffff;
+    v = (v | v << 8) & 0x00ff_00ff_00ff_00ff;
+    v = (v | v << 4) & 0x0f0f_0f0f_0f0f_0f0f;
+    v = (v | v << 2) & 0x3333_3333_3333_3333;
+    v = (v | v << 1) & 0x5555_5555_5555_5555;
     v
 }
 
@@ -23,7 +25,14 @@ pub(crate) const fn spread_16(v: u32) -> u32 {
 #[inline(always)]
 #[must_use]
 pub(crate) const fn morton(x: u32, y: u32) -> u32 {
-    spread_16(x) | spread_16(y) << 1
+    morton_64(x & 0xffff, y & 0xffff) as u32
+}
+
+/// The Morton code of all 32 bits of `x` and `y` (the metrics' z-order).
+#[inline(always)]
+#[must_use]
+pub(crate) const fn morton_64(x: u32, y: u32) -> u64 {
+    spread_32(x) | spread_32(y) << 1
 }
 
 /// The Morton code of the pixel `(x + dx, y + dy)` (modulo 2^16 on each
@@ -52,6 +61,10 @@ mod tests {
         assert_eq!(morton(0xffff, 0xffff), u32::MAX);
         // Only the low 16 bits count.
         assert_eq!(morton(0x1_0003, 0x2_0000), 5);
+        // The 64-bit code keeps them all, and agrees below.
+        assert_eq!(morton_64(u32::MAX, 0), 0x5555_5555_5555_5555);
+        assert_eq!(morton_64(0, 1 << 31), 1 << 63);
+        assert_eq!(morton_64(0x1_0003, 0x2_0000), 1 << 32 | 1 << 35 | 5);
     }
 
     #[test]
