@@ -11,9 +11,13 @@
 //! nanoseconds per call over 2^22 calls on inputs from a fixed-seed PCG,
 //! through `black_box`, single-threaded; they vary with the machine.
 
+use std::ffi::OsString;
 use std::hint::black_box;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
 use std::time::Instant;
 
+use clap::Parser;
 use rand::{Rng, SeedableRng};
 use rand_pcg::Pcg32;
 use wellspread::filter::{
@@ -23,6 +27,29 @@ use wellspread::filter::{
 use wellspread::glam::{Vec2, Vec3};
 use wellspread::warp::{self, AliasTable, Discrete};
 use wellspread::{Sampler2D, Sobol};
+
+#[path = "shared/cli.rs"]
+pub mod shared;
+
+use shared::Failure;
+
+/// The warps' contact sheet and cost table (docs/warps.md).
+#[derive(Parser, Debug)]
+pub struct Args {
+    /// Also draw the contact sheet into this PNG (its folder is made if
+    /// missing); without it only the cost table is printed
+    #[arg(value_name = "PNG")]
+    pub sheet: Option<PathBuf>,
+}
+
+/// Parses the arguments (without the program name): `Ok(None)` when the
+/// help was written to `out`.
+pub fn parse(
+    args: impl IntoIterator<Item = OsString>,
+    out: &mut dyn std::io::Write,
+) -> Result<Option<Args>, Failure> {
+    shared::parse::<Args>("warps", shared::EXIT_CODES, args, out)
+}
 
 const PANEL: u32 = 200;
 const MARGIN: u32 = 8;
@@ -115,7 +142,7 @@ fn panels() -> Vec<Panel> {
     ]
 }
 
-fn write_sheet(path: &str) -> std::io::Result<()> {
+fn write_sheet(path: &Path) -> Result<(), Failure> {
     let panels = panels();
     let columns = 5;
     let rows = panels.len().div_ceil(columns) as u32;
@@ -153,19 +180,17 @@ fn write_sheet(path: &str) -> std::io::Result<()> {
         }
         println!("panel {k}: {}", panel.title);
     }
-    // A missing folder is made, as every tool's output path does.
-    if let Some(parent) = std::path::Path::new(path).parent() {
-        std::fs::create_dir_all(parent)?;
-    }
-    let file = std::io::BufWriter::new(std::fs::File::create(path)?);
+    let cannot =
+        |e: &dyn std::fmt::Display| Failure::Io(format!("cannot write {}: {e}", path.display()));
+    let file = std::io::BufWriter::new(shared::create_file(path)?);
     let mut encoder = png::Encoder::new(file, width, height);
     encoder.set_color(png::ColorType::Rgb);
     encoder.set_depth(png::BitDepth::Eight);
-    let mut writer = encoder.write_header().map_err(std::io::Error::other)?;
+    let mut writer = encoder.write_header().map_err(|e| cannot(&e))?;
     writer
         .write_image_data(rgb.as_flattened())
-        .map_err(std::io::Error::other)?;
-    writer.finish().map_err(std::io::Error::other)
+        .map_err(|e| cannot(&e))?;
+    writer.finish().map_err(|e| cannot(&e))
 }
 
 /// Nanoseconds per call of `f` over the inputs, best of 3 passes.
@@ -181,11 +206,24 @@ fn time<T>(inputs: &[Vec2], f: impl Fn(Vec2) -> T) -> f64 {
     best
 }
 
-fn main() -> std::io::Result<()> {
-    if let Some(path) = std::env::args().nth(1) {
-        write_sheet(&path)?;
-        println!("wrote {path}");
+fn main() -> ExitCode {
+    let args = match parse(std::env::args_os().skip(1), &mut std::io::stdout().lock()) {
+        Ok(Some(args)) => args,
+        Ok(None) => return ExitCode::SUCCESS,
+        Err(failure) => return shared::exit("warps", Err(failure)),
+    };
+    if let Some(path) = &args.sheet {
+        if let Err(failure) = write_sheet(path) {
+            return shared::exit("warps", Err(failure));
+        }
+        println!("wrote {}", path.display());
     }
+    costs();
+    ExitCode::SUCCESS
+}
+
+/// Prints the cost table: nanoseconds per call of every map and choice.
+fn costs() {
     let mut rng = Pcg32::seed_from_u64(0x0027);
     let inputs: Vec<Vec2> = (0..1 << 22)
         .map(|_| {
@@ -286,5 +324,4 @@ fn main() -> std::io::Result<()> {
             time(&inputs, |u| a.sample(u.x)),
         );
     }
-    Ok(())
 }
