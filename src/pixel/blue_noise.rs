@@ -225,12 +225,15 @@ impl PixelColumns for SearchedColumns {
 ///
 /// A `BlueNoise` with these columns draws exactly as the default one does
 /// with [`SearchedColumns`]'s columns replaced by them: the same
-/// translation, code scramble, index shuffle and Owen scrambles. Every
-/// column set [`new`](Self::new) accepts keeps all of
-/// [`BlueNoise`]'s properties except the measured blue-noise ratios, which
-/// are the columns' own (every power-of-two prefix of every pixel stays a
-/// net whatever the columns; the check is what keeps distinct pixels of a
-/// tile on distinct shifts).
+/// translation, code scramble, index shuffle and Owen scrambles. Whatever
+/// the columns, each pixel keeps [`BlueNoise`]'s per-pixel properties
+/// (every power-of-two prefix a net, each point uniform, the 4D draw's
+/// nets), and the check of [`new`](Self::new) keeps the pixels of a
+/// `65536 x 65536` tile on distinct shifts. What holds across pixels is
+/// the columns' own: the blue-noise ratios, the independence of a pixel's
+/// pairs across the film, and each index splitting the film in halves
+/// (columns that leave a top digit alone break the last two) are measured
+/// and tested for [`SearchedColumns`] only.
 ///
 /// # Cost
 ///
@@ -312,8 +315,9 @@ impl PixelColumns for ExplicitColumns {
 /// The pixel columns are the type parameter `C`: [`SearchedColumns`], the
 /// shipped table, unless [`with_columns`](Self::with_columns) put others
 /// in ([`ExplicitColumns`], to search or compare tables with the sampler
-/// itself). The properties below hold for any columns but the measured
-/// ratios, which are [`SearchedColumns`]'.
+/// itself). The properties below are those of [`SearchedColumns`]; with
+/// other columns the per-pixel ones still hold, the ones across pixels
+/// are the columns' own ([`ExplicitColumns`] says which).
 ///
 /// # Properties
 ///
