@@ -205,6 +205,23 @@ pub enum Error {
         /// How many weights were given.
         count: usize,
     },
+    /// A pixel column given to
+    /// [`ExplicitColumns::new`](crate::ExplicitColumns::new) has a
+    /// coordinate with more than 24 digits.
+    PixelColumnTooWide {
+        /// Its place in the list, 0 to 31.
+        index: u32,
+        /// The column, x then y.
+        column: [u32; 2],
+    },
+    /// The pixel columns given to
+    /// [`ExplicitColumns::new`](crate::ExplicitColumns::new), together
+    /// with the 16 Sobol' sample columns, do not span all 48 digits of a
+    /// shift, so two pixels of one tile would share a shift.
+    DependentPixelColumns {
+        /// How many of the 48 digits they span.
+        rank: u32,
+    },
     /// A pixel filter ([`filter`](crate::filter)) was given a parameter it
     /// cannot use.
     FilterParameter {
@@ -493,6 +510,19 @@ impl fmt::Display for Error {
             } => write!(
                 f,
                 "the {filter} filter cannot use {parameter} = {value}; give {expected}"
+            ),
+            Error::PixelColumnTooWide { index, column } => write!(
+                f,
+                "pixel column {index} is [{:#x}, {:#x}], but a column has 24 digits per \
+                 coordinate (each below 2^24 = 16777216); mask both with 0xffffff",
+                column[0], column[1]
+            ),
+            Error::DependentPixelColumns { rank } => write!(
+                f,
+                "the 32 pixel columns and the 16 Sobol' sample columns span only {rank} of the \
+                 48 digits, so pixels of one 65536 x 65536 tile would share a shift; redraw \
+                 columns (the coarsest, at the end of the list, matter least) until they span \
+                 all 48"
             ),
             Error::TooManyWeights { count } => write!(
                 f,

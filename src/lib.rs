@@ -153,8 +153,8 @@ pub mod wgsl;
 
 pub use error::{Error, InputText};
 pub use pixel::{
-    AnyPixelSampler, BlueNoise, Domain, Draw, Padded, PaddedNd, PixelSampler, PixelSamplerKind,
-    Root, ZSobol,
+    AnyPixelSampler, BlueNoise, Domain, Draw, ExplicitColumns, Padded, PaddedNd, PixelColumns,
+    PixelSampler, PixelSamplerKind, Root, SearchedColumns, ZSobol,
 };
 pub use primitives::pattern_seed;
 pub use samplers::{

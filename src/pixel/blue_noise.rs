@@ -27,24 +27,28 @@ const DIGITS: u32 = 24;
 /// The pixel columns of the generator matrix: entry `2 j` is the
 /// contribution (x digits, y digits, 24-bit natural order: bit 23 is the
 /// digit of weight 1/2) of bit `j` of the pixel's `x`, entry `2 j + 1`
-/// that of bit `j` of `y`. Entries 0..8 (the 2 x 2 to 16 x 16 levels of
-/// the pixel hierarchy) are the result of `cargo run --release -p
-/// wellspread-lab --example blue_noise_search`, a deterministic hill-climb
-/// on the blurred error under exactly this sampler's
-/// randomisation; the rest are its fixed pseudo-random start, 24 random
-/// digits each (so the coarse levels flip the top digits too, which keeps
-/// the dimension pairs of a pixel independent). `the_columns_are_independent`
-/// tests that together with the first 16 Sobol columns they span all 48
-/// digits.
+/// that of bit `j` of `y`. The output of `cargo run --release -p
+/// wellspread-lab --example blue_noise_search` (deterministic), a
+/// hill-climb on the blurred error that scores each candidate by running
+/// `BlueNoise::with_columns` with it, so under exactly this sampler's
+/// randomisation. It climbed entries 0..8 (the 2 x 2 to 16 x 16 levels of
+/// the pixel hierarchy) for its default three sweeps from an earlier
+/// search's table (`docs/blue_noise.md`, The search, compares the two:
+/// the worst blurred ratio fell from 0.82 to 0.78); the rest are that
+/// search's pseudo-random start, 24 random digits each (so the coarse
+/// levels flip the top digits too, which keeps the dimension pairs of a
+/// pixel independent). `ExplicitColumns::new` accepts them
+/// (`the_columns_are_independent`): together with the first 16 Sobol
+/// columns they span all 48 digits.
 const PIXEL_COLUMNS: [[u32; 2]; 32] = [
-    [0xd459e5, 0xe7e552],
-    [0x7878d4, 0xbe5f6b],
-    [0x0a02b8, 0x6ffd15],
-    [0x9ba7b0, 0x4a162b],
-    [0x350c48, 0x66b51e],
-    [0x65ae75, 0x6bcb34],
-    [0x6ae98f, 0x14e66a],
-    [0x632e2b, 0x74de50],
+    [0xdc59e5, 0xe7e552],
+    [0x6838d4, 0xbe5f6b],
+    [0x1ac2b8, 0x6ffd15],
+    [0x9127b0, 0x4a162b],
+    [0x350c48, 0x70f51e],
+    [0x6dee75, 0x6acb34],
+    [0x72698f, 0x01a66a],
+    [0x636e2b, 0x74de50],
     [0x4ee042, 0x5ec581],
     [0x29a29d, 0xebb06f],
     [0x6ee0e0, 0xc56094],
@@ -71,32 +75,232 @@ const PIXEL_COLUMNS: [[u32; 2]; 32] = [
     [0xacaef8, 0xbe91d9],
 ];
 
-/// [`PIXEL_COLUMNS`] in the reversed-digit form the scrambles work in
-/// (bit `k` the digit of weight `2^-(k+1)`), combined per byte of the
-/// bit-reversed Morton code: entry `[b][v]` is the xor of the columns of
-/// the code bits whose reversed positions are the set bits of `v << 8 b`
-/// (reversed bit `8 b + i` is code bit `31 - 8 b - i`).
+/// The shift `G code` of a pixel whose Morton code is `code`: the xor of
+/// the `columns` of the code's set bits, in the columns' 24-digit natural
+/// order. The one place a shift is made from columns: the table below is
+/// built with it, and [`ExplicitColumns`] calls it per draw.
+const fn xor_columns(columns: &[[u32; 2]; 32], code: u32) -> [u32; 2] {
+    let mut shift = [0, 0];
+    let mut j = 0;
+    while j < 32 {
+        if code >> j & 1 == 1 {
+            shift[0] ^= columns[j][0];
+            shift[1] ^= columns[j][1];
+        }
+        j += 1;
+    }
+    shift
+}
+
+/// A shift in natural order (bit 23 the digit of weight 1/2) in the
+/// reversed-digit form the scrambles work in (bit `k` the digit of weight
+/// `2^-(k+1)`).
+const fn reversed([x, y]: [u32; 2]) -> [u32; 2] {
+    [
+        (x << (32 - DIGITS)).reverse_bits(),
+        (y << (32 - DIGITS)).reverse_bits(),
+    ]
+}
+
+/// [`PIXEL_COLUMNS`] in reversed-digit form, combined per byte of the
+/// bit-reversed Morton code: entry `[b][v]` is the shift of the code whose
+/// bit-reversal is `v << 8 b`.
 const PIXEL_TABLE: [[[u32; 2]; 256]; 4] = {
     let mut table = [[[0u32; 2]; 256]; 4];
     let mut b = 0;
     while b < 4 {
         let mut v = 0;
         while v < 256 {
-            let mut bit = 0;
-            while bit < 8 {
-                if v >> bit & 1 == 1 {
-                    let column = PIXEL_COLUMNS[31 - 8 * b - bit];
-                    table[b][v][0] ^= (column[0] << (32 - DIGITS)).reverse_bits();
-                    table[b][v][1] ^= (column[1] << (32 - DIGITS)).reverse_bits();
-                }
-                bit += 1;
-            }
+            let code = ((v as u32) << (8 * b)).reverse_bits();
+            table[b][v] = reversed(xor_columns(&PIXEL_COLUMNS, code));
             v += 1;
         }
         b += 1;
     }
     table
 };
+
+/// Rank over GF(2) of 48-digit vectors.
+fn rank(vectors: impl Iterator<Item = u64>) -> u32 {
+    let mut basis = [0u64; 64];
+    let mut rank = 0;
+    for mut v in vectors {
+        while v != 0 {
+            let top = 63 - v.leading_zeros() as usize;
+            if basis[top] == 0 {
+                basis[top] = v;
+                rank += 1;
+                break;
+            }
+            v ^= basis[top];
+        }
+    }
+    rank
+}
+
+/// How many of the 48 digits of a `(x, y)` pair of 24-digit shifts the 16
+/// Sobol' columns of the first `2^16` samples and the 32 pixel `columns`
+/// span together: 48 when no two pixels of a `65536 x 65536` tile share a
+/// shift, nor a set of `2^16` or fewer samples.
+fn span(columns: &[[u32; 2]; 32]) -> u32 {
+    let sobol = (0..16).map(|k| {
+        let (x, y) = sobol_reversed(1 << k);
+        [
+            x.reverse_bits() >> (32 - DIGITS),
+            y.reverse_bits() >> (32 - DIGITS),
+        ]
+    });
+    rank(
+        sobol
+            .chain(columns.iter().copied())
+            .map(|[x, y]| u64::from(x) << DIGITS | u64::from(y)),
+    )
+}
+
+pub(crate) mod sealed {
+    /// What [`PixelColumns`](super::PixelColumns) needs from a column
+    /// list, kept inside the crate so that every implementation is one
+    /// [`BlueNoise`](super::BlueNoise) checks.
+    pub trait Shift {
+        /// The shift of a pixel whose (translated, scrambled) Morton code,
+        /// bit-reversed, is `code_reversed`, in reversed-digit form, x
+        /// then y.
+        fn shift_reversed(&self, code_reversed: u32) -> [u32; 2];
+    }
+}
+
+/// The pixel columns a [`BlueNoise`] shifts its pixels by: the searched
+/// table ([`SearchedColumns`], the default) or a checked list of your own
+/// ([`ExplicitColumns`]). Sealed: these two are all the implementations,
+/// so every `BlueNoise` keeps the properties its docs state.
+pub trait PixelColumns:
+    sealed::Shift + Copy + core::fmt::Debug + PartialEq + Eq + core::hash::Hash + Send + Sync
+{
+    /// The 32 columns, as [`ExplicitColumns::new`] takes them: entry `2 j`
+    /// is the shift (x digits, y digits, 24 digits each, bit 23 the digit
+    /// of weight 1/2) that bit `j` of a pixel's `x` contributes, entry
+    /// `2 j + 1` that of bit `j` of `y`.
+    fn columns(&self) -> [[u32; 2]; 32];
+}
+
+/// The pixel columns [`BlueNoise`] ships and uses by default: a zero-sized
+/// name for a table built at compile time.
+///
+/// # Properties
+///
+/// Its draws equal those of `ExplicitColumns::new(SearchedColumns.columns())`
+/// bit for bit, and its columns pass that constructor's check.
+///
+/// # Cost
+///
+/// Zero bytes in the sampler; a draw looks its shift up in an 8 KiB table
+/// (four lookups).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct SearchedColumns;
+
+impl sealed::Shift for SearchedColumns {
+    #[inline(always)]
+    fn shift_reversed(&self, code_reversed: u32) -> [u32; 2] {
+        let mut shift = [0, 0];
+        for (b, table) in PIXEL_TABLE.iter().enumerate() {
+            let entry = table[(code_reversed >> (8 * b)) as usize & 0xff];
+            shift[0] ^= entry[0];
+            shift[1] ^= entry[1];
+        }
+        shift
+    }
+}
+
+impl PixelColumns for SearchedColumns {
+    fn columns(&self) -> [[u32; 2]; 32] {
+        PIXEL_COLUMNS
+    }
+}
+
+/// Pixel columns of your choice for a [`BlueNoise`]
+/// ([`with_columns`](BlueNoise::with_columns)): for searching or
+/// comparing column tables by running the sampler itself.
+///
+/// # Properties
+///
+/// A `BlueNoise` with these columns draws exactly as the default one does
+/// with [`SearchedColumns`]'s columns replaced by them: the same
+/// translation, code scramble, index shuffle and Owen scrambles. Whatever
+/// the columns, each pixel keeps [`BlueNoise`]'s per-pixel properties
+/// (every power-of-two prefix a net, each point uniform, the 4D draw's
+/// nets), and the check of [`new`](Self::new) keeps the pixels of a
+/// `65536 x 65536` tile on distinct shifts. What holds across pixels is
+/// the columns' own: the blue-noise ratios, the independence of a pixel's
+/// pairs across the film, and each index splitting the film in halves
+/// (columns that leave a top digit alone break the last two) are measured
+/// and tested for [`SearchedColumns`] only.
+///
+/// # Cost
+///
+/// 256 bytes in the sampler. A draw xors up to 32 columns per shift
+/// instead of four table lookups: slower than [`SearchedColumns`], fine
+/// for a search.
+///
+/// # Examples
+///
+/// ```
+/// use wellspread::{BlueNoise, ExplicitColumns, PixelColumns, PixelSampler, SearchedColumns};
+/// let columns = ExplicitColumns::new(SearchedColumns.columns())?;
+/// let shipped = BlueNoise::new(16, [64, 64], 3)?;
+/// let explicit = shipped.with_columns(columns);
+/// assert_eq!(
+///     explicit.sample_pixel([10, 20], 5, 2),
+///     shipped.sample_pixel([10, 20], 5, 2)
+/// );
+/// // Columns that leave digits out are refused.
+/// assert!(ExplicitColumns::new([[0, 0]; 32]).is_err());
+/// # Ok::<(), wellspread::Error>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct ExplicitColumns {
+    columns: [[u32; 2]; 32],
+}
+
+impl ExplicitColumns {
+    /// Checks `columns` (laid out as [`PixelColumns::columns`] returns
+    /// them) and keeps them.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::PixelColumnTooWide`] for a coordinate at or above `2^24`
+    /// (a column has 24 digits), and [`Error::DependentPixelColumns`] when
+    /// the columns and the 16 Sobol' columns of the first `2^16` samples
+    /// do not span all 48 digits (two pixels of a tile would share a
+    /// shift).
+    ///
+    /// # Cost
+    ///
+    /// A rank over GF(2) of 48 vectors: about a microsecond.
+    pub fn new(columns: [[u32; 2]; 32]) -> Result<Self, Error> {
+        for (index, column) in (0u32..).zip(columns) {
+            if column.iter().any(|&digits| digits >> DIGITS != 0) {
+                return Err(Error::PixelColumnTooWide { index, column });
+            }
+        }
+        match span(&columns) {
+            48 => Ok(Self { columns }),
+            rank => Err(Error::DependentPixelColumns { rank }),
+        }
+    }
+}
+
+impl sealed::Shift for ExplicitColumns {
+    #[inline]
+    fn shift_reversed(&self, code_reversed: u32) -> [u32; 2] {
+        reversed(xor_columns(&self.columns, code_reversed.reverse_bits()))
+    }
+}
+
+impl PixelColumns for ExplicitColumns {
+    fn columns(&self) -> [[u32; 2]; 32] {
+        self.columns
+    }
+}
 
 /// Blue-noise error across the screen at every prefix of every pixel: one
 /// digital point set over all pixels and samples, whose sample columns are
@@ -108,6 +312,13 @@ const PIXEL_TABLE: [[[u32; 2]; 256]; 4] = {
 /// Morton code, the pixel columns, the Owen scramble) and why every
 /// prefix keeps its nets: `docs/blue_noise.md`, section Construction.
 ///
+/// The pixel columns are the type parameter `C`: [`SearchedColumns`], the
+/// shipped table, unless [`with_columns`](Self::with_columns) put others
+/// in ([`ExplicitColumns`], to search or compare tables with the sampler
+/// itself). The properties below are those of [`SearchedColumns`]; with
+/// other columns the per-pixel ones still hold, the ones across pixels
+/// are the columns' own ([`ExplicitColumns`] says which).
+///
 /// # Properties
 ///
 /// - Every power-of-two prefix `0..2^m` (and every aligned block) of every
@@ -117,8 +328,8 @@ const PIXEL_TABLE: [[[u32; 2]; 256]; 4] = {
 ///   the per-pixel variance of `Padded<Sobol>`.
 /// - Blue-noise error across pixels at every prefix on integrands that are
 ///   smooth inside a pixel: `docs/blue_noise.md` measures the blurred RMSE
-///   at 0.30 to 0.53 times `Padded<Sobol>`'s on a per-pixel Gaussian and
-///   0.64 to 0.87 times on an image footprint (n = 1 to 16, pairs 0 and 2,
+///   at 0.27 to 0.53 times `Padded<Sobol>`'s on a per-pixel Gaussian and
+///   0.52 to 0.78 times on an image footprint (n = 1 to 16, pairs 0 and 2,
 ///   1D draws and the lens half of the 4D draw).
 /// - A domain's `next_4d` is one point of a 4D Owen-scrambled Sobol set per
 ///   pixel, each half shifted as a pair is: every power-of-two prefix is a
@@ -142,8 +353,9 @@ const PIXEL_TABLE: [[[u32; 2]; 256]; 4] = {
 /// and the code's scramble seed), two adds of dilated integers (the
 /// translated code), one bit reversal and one Owen scramble of the code,
 /// and four lookups in an 8 KiB table computed at compile time from the
-/// 256-byte column list. `docs/performance.md` has the ratio to
-/// `Padded<Sobol>`'s draw.
+/// 256-byte column list ([`ExplicitColumns`] xor up to 32 columns
+/// instead). `docs/performance.md` has the ratio to `Padded<Sobol>`'s
+/// draw. The default's columns take no space in the sampler.
 ///
 /// # Limits
 ///
@@ -186,7 +398,7 @@ const PIXEL_TABLE: [[[u32; 2]; 256]; 4] = {
 /// - Owen 1997, "Monte Carlo variance of scrambled net quadrature", SIAM J.
 ///   Numer. Anal. 34(5): why scrambled nets cancel Walsh coefficients.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct BlueNoise {
+pub struct BlueNoise<C = SearchedColumns> {
     /// Samples per pixel; 0 for a progressive (unbounded) sampler (a
     /// plain u32 keeps the domain small).
     samples_per_pixel: u32,
@@ -194,6 +406,8 @@ pub struct BlueNoise {
     frame: u32,
     /// The frame's part of every root key, hashed once here.
     frame_key: u64,
+    /// The pixel columns: zero-sized for the default.
+    columns: C,
 }
 
 impl BlueNoise {
@@ -230,7 +444,35 @@ impl BlueNoise {
             resolution,
             frame,
             frame_key: mix64(frame as u64 ^ salt::BLUE_NOISE_FRAME),
+            columns: SearchedColumns,
         })
+    }
+}
+
+impl<C: PixelColumns> BlueNoise<C> {
+    /// The same sampler (count, resolution, frame) with its pixel columns
+    /// replaced by `columns`, typically [`ExplicitColumns`]: every draw is
+    /// made as before, with `columns` in place of the old ones.
+    ///
+    /// ```
+    /// use wellspread::{BlueNoise, ExplicitColumns, PixelColumns, PixelSampler, SearchedColumns};
+    /// let mut columns = SearchedColumns.columns();
+    /// columns[0][0] ^= 1 << 23;
+    /// let sampler = BlueNoise::unbounded([64, 64], 0)?.with_columns(ExplicitColumns::new(columns)?);
+    /// let mut domain = sampler.start([5, 6], 7);
+    /// let point = domain.next_4d();
+    /// assert!(point.min_element() >= 0.0 && point.max_element() < 1.0);
+    /// # Ok::<(), wellspread::Error>(())
+    /// ```
+    #[must_use]
+    pub fn with_columns<D: PixelColumns>(self, columns: D) -> BlueNoise<D> {
+        BlueNoise {
+            samples_per_pixel: self.samples_per_pixel,
+            resolution: self.resolution,
+            frame: self.frame,
+            frame_key: self.frame_key,
+            columns,
+        }
     }
 
     /// The film size this sampler was built for, `[width, height]`.
@@ -245,19 +487,6 @@ impl BlueNoise {
         self.frame
     }
 
-    /// The digital shift `G code` of a pixel whose (shuffled) Morton code,
-    /// bit-reversed, is `code_reversed`, in reversed-digit form, x then y.
-    #[inline(always)]
-    pub(crate) fn pixel_shift(code_reversed: u32) -> [u32; 2] {
-        let mut shift = [0, 0];
-        for (b, table) in PIXEL_TABLE.iter().enumerate() {
-            let entry = table[(code_reversed >> (8 * b)) as usize & 0xff];
-            shift[0] ^= entry[0];
-            shift[1] ^= entry[1];
-        }
-        shift
-    }
-
     /// The sequence index of a draw's sample and the pixel's shift.
     ///
     /// The pixel's Morton code is translated and scrambled by a second mix
@@ -270,13 +499,10 @@ impl BlueNoise {
     /// samples differently. Every power-of-two prefix stays the same
     /// aligned block of the sequence.
     #[inline(always)]
-    fn index_and_shift(draw: Draw, seeds: OwenSeeds) -> (u32, [u32; 2]) {
+    fn index_and_shift(&self, draw: Draw, seeds: OwenSeeds) -> (u32, [u32; 2]) {
         let (code, seed) = Self::translated(draw.pixel_state, draw.stream);
         let order = hash_u32(seeds.index ^ code >> ORDER_SQUARE_BITS);
-        (
-            prefix_shuffle(draw.index, order),
-            Self::shift_of(code, seed),
-        )
+        (prefix_shuffle(draw.index, order), self.shift_of(code, seed))
     }
 
     /// The Morton code `code` of a pixel translated for a draw with
@@ -292,12 +518,13 @@ impl BlueNoise {
     /// The shift of a translated code: the code's nested scramble
     /// (`owen_scramble`, left bit-reversed for the table), looked up.
     #[inline(always)]
-    fn shift_of(code: u32, seed: u32) -> [u32; 2] {
-        Self::pixel_shift(owen_scramble_reversed(code.reverse_bits(), seed))
+    fn shift_of(&self, code: u32, seed: u32) -> [u32; 2] {
+        self.columns
+            .shift_reversed(owen_scramble_reversed(code.reverse_bits(), seed))
     }
 }
 
-impl PixelSampler for BlueNoise {
+impl<C: PixelColumns> PixelSampler for BlueNoise<C> {
     /// The count it was built with, or `None` for
     /// [`unbounded`](BlueNoise::unbounded).
     #[inline]
@@ -322,7 +549,7 @@ impl PixelSampler for BlueNoise {
     #[inline]
     fn draw_2d(&self, draw: Draw) -> Vec2 {
         let seeds = OwenSeeds::from_stream(draw.stream);
-        let (s, [gx, gy]) = Self::index_and_shift(draw, seeds);
+        let (s, [gx, gy]) = self.index_and_shift(draw, seeds);
         let (x, y) = sobol_reversed(s);
         bits_to_point(scrambled_bits(x ^ gx, y ^ gy, seeds))
     }
@@ -341,61 +568,60 @@ impl PixelSampler for BlueNoise {
     /// shift of an unrelated stream.
     #[inline]
     fn draw_4d(&self, draw: Draw) -> Vec4 {
-        let (s, [gx, gy]) = Self::index_and_shift(draw, OwenSeeds::from_stream(draw.stream));
+        let (s, [gx, gy]) = self.index_and_shift(draw, OwenSeeds::from_stream(draw.stream));
         let (lens, seed) = Self::translated(draw.pixel_state, second_stream(draw.stream));
-        let [hx, hy] = Self::shift_of(lens, seed);
+        let [hx, hy] = self.shift_of(lens, seed);
         sobol_4d_point(s, draw.stream, [gx, gy, hx, hy])
     }
 }
 
 #[cfg(test)]
 mod tests {
+    use super::sealed::Shift;
     use super::*;
-    use crate::samplers::sequence::digital::pascal_reversed;
-
-    /// Rank over GF(2) of 48-bit vectors.
-    fn rank(vectors: &[u64]) -> usize {
-        let mut basis = [0u64; 64];
-        let mut rank = 0;
-        for &v in vectors {
-            let mut v = v;
-            while v != 0 {
-                let top = 63 - v.leading_zeros() as usize;
-                if basis[top] == 0 {
-                    basis[top] = v;
-                    rank += 1;
-                    break;
-                }
-                v ^= basis[top];
-            }
-        }
-        rank
-    }
+    use std::string::ToString;
 
     #[test]
     fn the_columns_are_independent() {
         // The 16 Sobol columns of the first 2^16 samples and the 32 pixel
         // columns span all 48 digits: two pixels of a tile never share a
         // shift, nor a set of up to 2^16 samples.
-        let mut vectors: std::vec::Vec<u64> = (0..16)
-            .map(|k| {
-                let s = 1u32 << k;
-                let x = s.reverse_bits() >> 8;
-                let y = pascal_reversed(s).reverse_bits() >> 8;
-                u64::from(x) << 24 | u64::from(y)
-            })
-            .collect();
-        vectors.extend(
-            PIXEL_COLUMNS
-                .iter()
-                .map(|&[x, y]| u64::from(x) << 24 | u64::from(y)),
+        assert_eq!(span(&PIXEL_COLUMNS), 48);
+        assert_eq!(
+            ExplicitColumns::new(PIXEL_COLUMNS).map(|c| c.columns()),
+            Ok(PIXEL_COLUMNS)
         );
-        assert!(
-            PIXEL_COLUMNS
-                .iter()
-                .all(|c| c[0] < 1 << 24 && c[1] < 1 << 24)
+    }
+
+    #[test]
+    fn dependent_or_wide_columns_are_refused() {
+        let mut twice = PIXEL_COLUMNS;
+        twice[31] = twice[30];
+        let error = ExplicitColumns::new(twice).unwrap_err();
+        assert_eq!(error, Error::DependentPixelColumns { rank: 47 });
+        assert!(error.to_string().contains("47 of the 48"), "{error}");
+        // A column equal to a Sobol' column (sample 1: x = 1/2, y = 1/2).
+        let mut sobol = PIXEL_COLUMNS;
+        sobol[31] = [1 << 23, 1 << 23];
+        assert!(matches!(
+            ExplicitColumns::new(sobol),
+            Err(Error::DependentPixelColumns { rank: 47 })
+        ));
+        assert_eq!(
+            ExplicitColumns::new([[0, 0]; 32]),
+            Err(Error::DependentPixelColumns { rank: 16 })
         );
-        assert_eq!(rank(&vectors), 48);
+        let mut wide = PIXEL_COLUMNS;
+        wide[5][1] |= 1 << 24;
+        let error = ExplicitColumns::new(wide).unwrap_err();
+        assert_eq!(
+            error,
+            Error::PixelColumnTooWide {
+                index: 5,
+                column: wide[5]
+            }
+        );
+        assert!(error.to_string().contains("0xffffff"), "{error}");
     }
 
     #[test]
@@ -417,28 +643,33 @@ mod tests {
 
     #[test]
     fn the_table_is_the_xor_of_the_columns() {
-        for (x, y) in [
-            (0, 0),
-            (1, 0),
-            (0, 1),
-            (255, 17),
-            (65535, 65535),
-            (4660, 300),
-        ] {
-            let code = morton(x, y);
-            let mut expect = [0, 0];
-            for (j, column) in PIXEL_COLUMNS.iter().enumerate() {
-                if code >> j & 1 == 1 {
-                    expect[0] ^= column[0];
-                    expect[1] ^= column[1];
-                }
+        let explicit = ExplicitColumns::new(PIXEL_COLUMNS).unwrap();
+        let mut code = 0x1234_5678u32;
+        for _ in 0..4096 {
+            code = hash_u32(code);
+            for c in [code, code & 0xff, code & 0xffff_0000, 1 << (code % 32)] {
+                assert_eq!(
+                    SearchedColumns.shift_reversed(c),
+                    explicit.shift_reversed(c),
+                    "{c:#x}"
+                );
             }
-            let [rx, ry] = BlueNoise::pixel_shift(code.reverse_bits());
-            let natural = [
-                rx.reverse_bits() >> (32 - DIGITS),
-                ry.reverse_bits() >> (32 - DIGITS),
-            ];
-            assert_eq!(natural, expect, "({x}, {y})");
         }
+        // Linear in the code, and bit `j` of the code gives column `j`.
+        let natural = |[x, y]: [u32; 2]| [x.reverse_bits() >> 8, y.reverse_bits() >> 8];
+        for (j, column) in PIXEL_COLUMNS.iter().enumerate() {
+            let code = 1u32 << j;
+            assert_eq!(
+                natural(SearchedColumns.shift_reversed(code.reverse_bits())),
+                *column
+            );
+        }
+        let (a, b) = (
+            morton(4660, 300).reverse_bits(),
+            morton(65535, 17).reverse_bits(),
+        );
+        let [ax, ay] = SearchedColumns.shift_reversed(a);
+        let [bx, by] = SearchedColumns.shift_reversed(b);
+        assert_eq!(SearchedColumns.shift_reversed(a ^ b), [ax ^ bx, ay ^ by]);
     }
 }

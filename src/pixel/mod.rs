@@ -4,7 +4,7 @@
 //! domains; [`PixelSampler::sample_pixel`] is a domain's `d`-th 2D draw in
 //! O(1).
 
-mod blue_noise;
+pub(crate) mod blue_noise;
 mod domain;
 mod kind;
 mod padded;
@@ -15,7 +15,7 @@ mod zsobol;
 
 use glam::{Vec2, Vec3, Vec4};
 
-pub use blue_noise::BlueNoise;
+pub use blue_noise::{BlueNoise, ExplicitColumns, PixelColumns, SearchedColumns};
 pub use domain::Domain;
 pub use kind::{AnyPixelSampler, PixelSamplerKind};
 pub use padded::Padded;

@@ -74,7 +74,8 @@ mod tests {
     use std::string::String;
 
     use super::*;
-    use crate::BlueNoise;
+    use crate::SearchedColumns;
+    use crate::pixel::blue_noise::sealed::Shift;
     use crate::primitives::salt;
     use crate::samplers::sequence::sobol_4d::dimensions_2_3_reversed;
 
@@ -102,7 +103,7 @@ mod tests {
     #[test]
     fn blue_noise_columns_are_the_cpu_tables() {
         let want = table((0..32).map(|p| {
-            let [x, y] = BlueNoise::pixel_shift(1 << p);
+            let [x, y] = SearchedColumns.shift_reversed(1 << p);
             (x, y)
         }));
         assert_eq!(

@@ -289,14 +289,14 @@ const WS_BLUE_NOISE_COLUMNS = array<vec2<u32>, 32>(
     vec2<u32>(0x00070776u, 0x002906a3u),
     vec2<u32>(0x00b94594u, 0x00f60dd7u),
     vec2<u32>(0x00420772u, 0x0081a37au),
-    vec2<u32>(0x00d474c6u, 0x000a7b2eu),
-    vec2<u32>(0x00f19756u, 0x00566728u),
-    vec2<u32>(0x00ae75a6u, 0x002cd3d6u),
-    vec2<u32>(0x001230acu, 0x0078ad66u),
-    vec2<u32>(0x000de5d9u, 0x00d46852u),
-    vec2<u32>(0x001d4050u, 0x00a8bff6u),
-    vec2<u32>(0x002b1e1eu, 0x00d6fa7du),
-    vec2<u32>(0x00a79a2bu, 0x004aa7e7u),
+    vec2<u32>(0x00d476c6u, 0x000a7b2eu),
+    vec2<u32>(0x00f1964eu, 0x00566580u),
+    vec2<u32>(0x00ae77b6u, 0x002cd356u),
+    vec2<u32>(0x001230acu, 0x0078af0eu),
+    vec2<u32>(0x000de489u, 0x00d46852u),
+    vec2<u32>(0x001d4358u, 0x00a8bff6u),
+    vec2<u32>(0x002b1c16u, 0x00d6fa7du),
+    vec2<u32>(0x00a79a3bu, 0x004aa7e7u),
 // ws-blue-noise-columns-end
 );
 

@@ -10,7 +10,9 @@ use proptest::prelude::*;
 use wellspread::glam::Vec2;
 use wellspread::metrics::is_net_base2;
 use wellspread::primitives::hash_u32;
-use wellspread::{BlueNoise, Error, Padded, PixelSampler, Sobol};
+use wellspread::{
+    BlueNoise, Error, ExplicitColumns, Padded, PixelColumns, PixelSampler, SearchedColumns, Sobol,
+};
 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(256))]
@@ -53,6 +55,45 @@ proptest! {
         let v = sampler.start([x, y], index).next_4d();
         let film = sampler.start([x, y], index).next_2d();
         prop_assert_eq!((v.x, v.y), (film.x, film.y));
+    }
+
+    #[test]
+    fn explicit_columns_draw_what_the_default_draws(
+        x in any::<u32>(),
+        y in any::<u32>(),
+        frame in any::<u32>(),
+        index in any::<u32>(),
+        key in any::<u32>(),
+        spp in prop_oneof![Just(None), (1u32..=64).prop_map(Some)],
+    ) {
+        let shipped = match spp {
+            Some(n) => BlueNoise::new(n, [4096, 4096], frame),
+            None => BlueNoise::unbounded([4096, 4096], frame),
+        }
+        .unwrap();
+        let explicit =
+            shipped.with_columns(ExplicitColumns::new(SearchedColumns.columns()).unwrap());
+        prop_assert_eq!(explicit.samples_per_pixel(), shipped.samples_per_pixel());
+        for pair in [0, 1, 7, key] {
+            prop_assert_eq!(
+                explicit.sample_pixel([x, y], index, pair),
+                shipped.sample_pixel([x, y], index, pair)
+            );
+        }
+        // Every draw width, in and under a branch and a split.
+        let (a, b) = (shipped.start([x, y], index), explicit.start([x, y], index));
+        for (mut a, mut b) in [
+            (a, b),
+            (a.branch(key), b.branch(key)),
+            (a.split(key, 12, 5), b.split(key, 12, 5)),
+        ] {
+            for _ in 0..2 {
+                prop_assert_eq!(a.next_1d(), b.next_1d());
+                prop_assert_eq!(a.next_2d(), b.next_2d());
+                prop_assert_eq!(a.next_3d(), b.next_3d());
+                prop_assert_eq!(a.next_4d(), b.next_4d());
+            }
+        }
     }
 
     #[test]
