@@ -26,15 +26,23 @@ pub struct Image {
 impl Image {
     /// Root-mean-square difference over every pixel and channel, in f64.
     pub fn rmse(&self, other: &Image) -> f64 {
+        self.rmse_rows(other, 0..self.height)
+    }
+
+    /// The RMSE over the film rows `rows` only (row 0 at the top); 0 for
+    /// no rows.
+    pub fn rmse_rows(&self, other: &Image, rows: std::ops::Range<u32>) -> f64 {
         assert_eq!((self.width, self.height), (other.width, other.height));
-        let sum: f64 = self
-            .pixels
+        let width = self.width as usize;
+        let span = rows.start as usize * width..(rows.end.min(self.height) as usize * width);
+        let count = span.len().max(1);
+        let sum: f64 = self.pixels[span.clone()]
             .iter()
-            .zip(&other.pixels)
+            .zip(&other.pixels[span])
             .flat_map(|(a, b)| (0..3).map(move |c| f64::from(a[c]) - f64::from(b[c])))
             .map(|d| d * d)
             .sum();
-        (sum / (3 * self.pixels.len()) as f64).sqrt()
+        (sum / (3 * count) as f64).sqrt()
     }
 }
 
