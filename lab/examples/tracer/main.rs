@@ -64,9 +64,13 @@ use crate::scenes::{Built, SceneKind};
 use crate::shared::Failure;
 
 /// A row's `top_rmse` is over the top `1 / TOP_ROWS_DIVISOR` of the film's
-/// rows: in cornell the ceiling, the light and the top of the walls, the
-/// shading points nearest the light.
+/// rows, leaving out the pixels where the reference passes
+/// [`TOP_BRIGHTEST`] in a channel: in cornell the ceiling and the top of
+/// the walls and back wall, the shading points nearest the light, without
+/// the light itself and its defocused edge (whose error comes from the
+/// film and lens, not from light sampling).
 const TOP_ROWS_DIVISOR: u32 = 4;
+const TOP_BRIGHTEST: f32 = 1.0;
 
 /// Bins of the radially averaged error spectrum.
 const SPECTRUM_BINS: usize = 48;
@@ -128,16 +132,16 @@ fn run(options: &Options, stdout: &mut dyn Write) -> Result<(), Failure> {
     for &filter in &options.filters {
         for &mode in &options.modes {
             for &scene_kind in &options.scenes {
-                for light in options.lights_for(scene_kind) {
-                    for (width, height) in options.sizes_for(scene_kind) {
-                        let run = run_scene(
-                            options,
-                            &progress,
-                            scene_kind,
-                            width,
-                            height,
-                            (filter, mode, light),
-                        )?;
+                let lights = options.lights_for(scene_kind);
+                for (width, height) in options.sizes_for(scene_kind) {
+                    for run in run_scene(
+                        options,
+                        &progress,
+                        scene_kind,
+                        width,
+                        height,
+                        (filter, mode, &lights),
+                    )? {
                         rows.extend(run.rows.iter().cloned());
                         runs.push(run);
                     }
@@ -186,58 +190,74 @@ struct SceneRun {
 }
 
 /// Renders one scene at one size under `filter` and `mode` with every
-/// requested sampler and count, and writes its pictures.
+/// requested sampler and count, once per light sampling in `lights`, and
+/// writes its pictures: one run per light. The lights take turns at each
+/// sampler and count, so their frame times are measured seconds apart and
+/// a change in the machine's load falls on both alike.
 fn run_scene(
     options: &Options,
     progress: &Progress,
     kind: SceneKind,
     width: u32,
     height: u32,
-    (filter, mode, light): (Filter, FilterMode, Light),
-) -> Result<SceneRun, Failure> {
-    let job = SceneJob::prepare(
-        options,
-        progress,
-        kind,
-        width,
-        height,
-        (filter, mode, light),
-    )?;
-    let mut rows = Vec::new();
-    let mut firsts = Vec::new();
+    (filter, mode, lights): (Filter, FilterMode, &[Light]),
+) -> Result<Vec<SceneRun>, Failure> {
+    let jobs = lights
+        .iter()
+        .map(|&light| {
+            SceneJob::prepare(
+                options,
+                progress,
+                kind,
+                width,
+                height,
+                (filter, mode, light),
+            )
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let mut rows = vec![Vec::new(); jobs.len()];
+    let mut firsts = vec![Vec::new(); jobs.len()];
     for spp in options.spps_for(kind) {
-        let mut frames = Vec::new();
+        let mut frames: Vec<Vec<Frames>> = jobs.iter().map(|_| Vec::new()).collect();
         for sampler in options.samplers_for(kind) {
-            if let Some(f) = job.measure(sampler, spp)? {
-                rows.push(f.row.clone());
-                frames.push(f);
+            for (j, job) in jobs.iter().enumerate() {
+                if let Some(f) = job.measure(sampler, spp)? {
+                    rows[j].push(f.row.clone());
+                    frames[j].push(f);
+                }
             }
         }
-        // Nothing to show if every sampler rejected this count.
-        if let Some(first) = frames.first() {
-            job.write_sheets(spp, &frames)?;
-            firsts.push((
-                spp,
-                first.row.sampler,
-                first.image.clone(),
-                first.first_rmse,
-            ));
+        for (j, job) in jobs.iter().enumerate() {
+            // Nothing to show if every sampler rejected this count.
+            if let Some(first) = frames[j].first() {
+                job.write_sheets(spp, &frames[j])?;
+                firsts[j].push((
+                    spp,
+                    first.row.sampler,
+                    first.image.clone(),
+                    first.first_rmse,
+                ));
+            }
         }
     }
-    if !rows.is_empty() {
-        job.write_trade_plot(&rows)?;
+    let mut runs = Vec::new();
+    for ((job, rows), firsts) in jobs.into_iter().zip(rows).zip(firsts) {
+        if !rows.is_empty() {
+            job.write_trade_plot(&rows)?;
+        }
+        progress.note(&format!("{}: wrote {}", job.label, job.dir.display()));
+        runs.push(SceneRun {
+            kind,
+            width,
+            height,
+            filter,
+            mode,
+            rows,
+            reference: job.reference,
+            firsts,
+        });
     }
-    progress.note(&format!("{}: wrote {}", job.label, job.dir.display()));
-    Ok(SceneRun {
-        kind,
-        width,
-        height,
-        filter,
-        mode,
-        rows,
-        reference: job.reference,
-        firsts,
-    })
+    Ok(runs)
 }
 
 /// `filters-<scene>-<W>x<H>-<spp>spp.png` under `--out`: per scene, size
@@ -456,7 +476,11 @@ impl<'a> SceneJob<'a> {
             };
             let rmse = image.rmse(&self.reference);
             squares.0 += rmse * rmse;
-            let top = image.rmse_rows(&self.reference, 0..height.div_ceil(TOP_ROWS_DIVISOR));
+            let top_pixels = (height.div_ceil(TOP_ROWS_DIVISOR) * width) as usize;
+            let reference = &self.reference.pixels;
+            let top = image.rmse_where(&self.reference, |i| {
+                i < top_pixels && reference[i].iter().all(|&v| v <= TOP_BRIGHTEST)
+            });
             top_squares += top * top;
             let blurred = blurred_rmse(&image, &self.reference);
             squares.1 += blurred * blurred;

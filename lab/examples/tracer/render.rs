@@ -26,23 +26,23 @@ pub struct Image {
 impl Image {
     /// Root-mean-square difference over every pixel and channel, in f64.
     pub fn rmse(&self, other: &Image) -> f64 {
-        self.rmse_rows(other, 0..self.height)
+        self.rmse_where(other, |_| true)
     }
 
-    /// The RMSE over the film rows `rows` only (row 0 at the top); 0 for
-    /// no rows.
-    pub fn rmse_rows(&self, other: &Image, rows: std::ops::Range<u32>) -> f64 {
+    /// The RMSE over the pixels whose row-major index `keep` accepts; 0
+    /// where it accepts none.
+    pub fn rmse_where(&self, other: &Image, keep: impl Fn(usize) -> bool) -> f64 {
         assert_eq!((self.width, self.height), (other.width, other.height));
-        let width = self.width as usize;
-        let span = rows.start as usize * width..(rows.end.min(self.height) as usize * width);
-        let count = span.len().max(1);
-        let sum: f64 = self.pixels[span.clone()]
-            .iter()
-            .zip(&other.pixels[span])
-            .flat_map(|(a, b)| (0..3).map(move |c| f64::from(a[c]) - f64::from(b[c])))
-            .map(|d| d * d)
-            .sum();
-        (sum / (3 * count) as f64).sqrt()
+        let (mut sum, mut count) = (0.0, 0usize);
+        for (i, (a, b)) in self.pixels.iter().zip(&other.pixels).enumerate() {
+            if keep(i) {
+                count += 1;
+                sum += (0..3)
+                    .map(|c| (f64::from(a[c]) - f64::from(b[c])).powi(2))
+                    .sum::<f64>();
+            }
+        }
+        (sum / (3 * count.max(1)) as f64).sqrt()
     }
 }
 

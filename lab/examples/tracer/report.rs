@@ -29,7 +29,8 @@ pub struct Row {
     pub light: Option<Light>,
     /// Root-mean-square over the frames of each frame's RMSE.
     pub rmse: f64,
-    /// The same over the top quarter of the film's rows only.
+    /// The same over the top quarter of the film's rows only, the light's
+    /// own pixels left out (see `TOP_ROWS_DIVISOR` in main.rs).
     pub top_rmse: f64,
     /// The same after the viewing blur ([`blurred_rmse`]).
     pub blurred_rmse: f64,
@@ -415,8 +416,9 @@ fn joint_versus_pairs(rows: &[Row]) -> Option<String> {
 
 /// The run of several light samplings (cornell only): one table per size,
 /// a line per sampler and count with each light's RMSE / blurred RMSE, the
-/// RMSE over the film's top quarter (the ceiling, the light and the top of
-/// the walls, the shading points nearest the light) and ms per frame, then
+/// RMSE over the film's top quarter without the light's own pixels (the
+/// ceiling and the top of the walls, the shading points nearest the
+/// light) and ms per frame, then
 /// each other light against the first: the RMSE ratio, the top-quarter
 /// RMSE ratio, the time ratio and the efficiency ratio RMSE^2 x time,
 /// below 1 where the other light sampling is ahead.
@@ -428,7 +430,7 @@ fn light_tables(options: &Options, rows: &[Row]) -> String {
         let frames = frames_label(options.frames_for(scene));
         let _ = writeln!(
             text,
-            "\n### {scene} {width}x{height}, light sampling: RMSE / blurred RMSE, top-quarter RMSE, ms per frame ({frames}); ratios {} / {first}\n",
+            "\n### {scene} {width}x{height}, light sampling: RMSE / blurred RMSE, top-quarter RMSE (the light left out), ms per frame ({frames}); ratios {} / {first}\n",
             others
                 .iter()
                 .map(|l| l.name())
