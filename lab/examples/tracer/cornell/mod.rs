@@ -22,7 +22,7 @@
 //! | where | draws |
 //! | --- | --- |
 //! | the sample's root domain | [`film_lens`](PathSamples::film_lens): film offset `xy` and lens point `zw` in one 4D draw |
-//! | bounce `b`: `root.branch(BOUNCE).branch(b)` | light choice (1D), light point (2D), BSDF (2D), roulette (1D), in this order, at every bounce |
+//! | bounce `b`: `root.branch(BOUNCE).branch(b)` | light choice (1D), light sample (2D: a direction in the light's solid angle, or a point on it), BSDF (2D), roulette (1D), in this order, at every bounce |
 //!
 //! so the numbers of bounce `b` never depend on what earlier bounces did.
 //! Two implementations feed it: [`Pairs`], over any
@@ -343,7 +343,7 @@ fn trace<S: PathSamples>(scene: &Scene, light: Light, mut ray: Ray, root: &S) ->
     for bounce in 0..MAX_BOUNCES {
         let mut domain = bounces.branch(bounce);
         let light_choice = domain.next_1d();
-        let light_point = domain.next_2d();
+        let light_sample = domain.next_2d();
         let bsdf = domain.next_2d();
         let roulette = domain.next_1d();
 
@@ -370,7 +370,7 @@ fn trace<S: PathSamples>(scene: &Scene, light: Light, mut ray: Ray, root: &S) ->
                 // the layout holds for more.
                 let (light_index, _) = warp::discrete(light_choice, 1);
                 debug_assert_eq!(light_index, 0);
-                let weight = next_event(scene, light, light_point, origin, n, &mut rays);
+                let weight = next_event(scene, light, light_sample, origin, n, &mut rays);
                 if weight > 0.0 {
                     radiance += throughput
                         * albedo
