@@ -16,7 +16,8 @@ use crate::shared::{self, Failure};
 /// What the tracer writes and how it exits; shown under `--help`.
 const HELP: &str = "\
 Output, under --out (default out/), per scene as <scene>-<W>x<H>-<filter>/
-(<scene>-<W>x<H>-<filter>-<mode>/ for the sampled --filter-mode values):
+(<scene>-<W>x<H>-<filter>-<mode>/ for the sampled --filter-mode values,
+cornell-<W>x<H>-box-area-light/ for --light area):
   reference.png              the reference image every RMSE is measured
                              against: what infinitely many samples would give
                              under the same filter (exact or quadrature where
@@ -38,10 +39,13 @@ blurred RMSE per sampler and filter, each mode side by side), and
 filters-<scene>-<W>x<H>-<spp>spp.png under --out is a contact sheet of
 the first sampler's crop: one row per filter, the reference then each mode.
 The markdown tables go to stdout; --report writes the rows as JSON
-(scene, filter, filter_mode, sampler, spp, rmse, blurred_rmse,
-low_frequency_power, seconds, frames, width, height) and --docs the tables as a markdown page headed by the
-command and machine (on a page that has them, only the text between the
-tracer's markers is replaced).
+(scene, filter, filter_mode, light, sampler, spp, rmse, blurred_rmse,
+top_rmse, low_frequency_power, seconds, frames, width, height) and --docs
+the tables as a markdown page headed by the command and machine (on a page
+that has them, only the text between the tracer's markers is replaced; a
+--light comparison has markers of its own).
+With two --light values the cornell frames of the two take turns at each
+sampler and count, so that their times meet the same machine load.
 With --frames K (default 1, 4 for cornell, whose path-traced error is
 noisier), rmse and blurred_rmse are root-mean-square over the K frames.
 
