@@ -1412,7 +1412,7 @@ const RECTANGLE_F32_MIN_MODULUS2: f32 = 1.0 / 64.0;
 const RECTANGLE_F32_MIN_GRAZING: f32 = 1.0 / 512.0;
 
 /// The spherical rectangle of a light rectangle seen from a point, in f32,
-/// for rectangles of at least [`RECTANGLE_F32_MIN_SOLID_ANGLE`]: the
+/// where that is accurate (see [`SphericalRectangleF32::new`]): the
 /// fields of [`SphericalRectangle`] in closed form, with no inverse
 /// trigonometry but one `atan2`. In the rectangle's frame each edge plane's
 /// normal has two non-zero coordinates, so the corner angles are arguments
@@ -1438,7 +1438,9 @@ struct SphericalRectangleF32 {
 
 impl SphericalRectangleF32 {
     /// `None` where the f64 evaluation must take over: a degenerate or
-    /// non-finite rectangle, or one below the f32 path's solid angle.
+    /// non-finite rectangle, one below [`RECTANGLE_F32_MIN_SOLID_ANGLE`],
+    /// seen grazing ([`RECTANGLE_F32_MIN_GRAZING`]) or with two corners
+    /// nearly opposite ([`RECTANGLE_F32_MIN_MODULUS2`]).
     #[inline]
     fn new(corner: Vec3, ex: Vec3, ey: Vec3, p: Vec3) -> Option<Self> {
         let ex_len = ex.length();
@@ -1494,8 +1496,7 @@ impl SphericalRectangleF32 {
             && z0 < 0.0
             && area >= RECTANGLE_F32_MIN_SOLID_ANGLE
             // |d_i + i det_i|^2 = 2 (1 + a.b)(1 + b.c)(1 + c.a): near 0 when
-            // two corners are nearly opposite (a point just off the
-            // rectangle's plane, over it), where d_i cancels in f32.
+            // two corners are nearly opposite, where d_i cancels in f32.
             && d1 * d1 + det1 * det1 >= RECTANGLE_F32_MIN_MODULUS2
             && d2 * d2 + det2 * det2 >= RECTANGLE_F32_MIN_MODULUS2
             // Grazing: the sine squared of the angles at which the point
