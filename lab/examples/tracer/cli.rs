@@ -8,6 +8,7 @@ use std::path::PathBuf;
 
 use clap::Parser;
 
+use crate::cornell::Light;
 use crate::render::{Filter, FilterMode, TracerSampler};
 use crate::scenes::{Built, SceneKind};
 use crate::shared::{self, Failure};
@@ -15,7 +16,8 @@ use crate::shared::{self, Failure};
 /// What the tracer writes and how it exits; shown under `--help`.
 const HELP: &str = "\
 Output, under --out (default out/), per scene as <scene>-<W>x<H>-<filter>/
-(<scene>-<W>x<H>-<filter>-<mode>/ for the sampled --filter-mode values):
+(<scene>-<W>x<H>-<filter>-<mode>/ for the sampled --filter-mode values,
+cornell-<W>x<H>-box-area-light/ for --light area):
   reference.png              the reference image every RMSE is measured
                              against: what infinitely many samples would give
                              under the same filter (exact or quadrature where
@@ -37,10 +39,13 @@ blurred RMSE per sampler and filter, each mode side by side), and
 filters-<scene>-<W>x<H>-<spp>spp.png under --out is a contact sheet of
 the first sampler's crop: one row per filter, the reference then each mode.
 The markdown tables go to stdout; --report writes the rows as JSON
-(scene, filter, filter_mode, sampler, spp, rmse, blurred_rmse,
-low_frequency_power, seconds, frames, width, height) and --docs the tables as a markdown page headed by the
-command and machine (on a page that has them, only the text between the
-tracer's markers is replaced).
+(scene, filter, filter_mode, light, sampler, spp, rmse, blurred_rmse,
+top_rmse, low_frequency_power, seconds, frames, width, height) and --docs
+the tables as a markdown page headed by the command and machine (on a page
+that has them, only the text between the tracer's markers is replaced; a
+--light comparison has markers of its own).
+With two --light values the cornell frames of the two take turns at each
+sampler and count, so that their times meet the same machine load.
 With --frames K (default 1, 4 for cornell, whose path-traced error is
 noisier), rmse and blurred_rmse are root-mean-square over the K frames.
 
@@ -86,6 +91,13 @@ pub struct Cli {
     /// sum(w L) / n) [default: weighted]
     #[arg(long = "filter-mode", value_name = "LIST", value_delimiter = ',', value_parser = parse_filter_mode)]
     modes: Vec<FilterMode>,
+    /// Comma-separated light sampling of cornell's next-event estimation:
+    /// solid-angle (directions uniform in the light's solid angle,
+    /// warp::spherical_rectangle), area (points uniform on the light);
+    /// with both, cornell alone renders under each and one table compares
+    /// them [default: solid-angle]
+    #[arg(long = "light", value_name = "LIST", value_delimiter = ',', value_parser = parse_light)]
+    lights: Vec<Light>,
     /// First frame (what a renderer passes per frame: the `frame` of
     /// pattern_seed, Padded, ZSobol and BlueNoise), 0 to 4294967295
     #[arg(long, alias = "seed", value_name = "N", default_value = "0", value_parser = shared::whole_number)]
@@ -122,6 +134,8 @@ pub struct Options {
     pub filters: Vec<Filter>,
     /// The filter modes, in the order given.
     pub modes: Vec<FilterMode>,
+    /// How cornell samples its light, in the order given.
+    pub lights: Vec<Light>,
     pub frame: u32,
     /// The `--frames` asked for; `None`: each scene's own.
     pub frames: Option<u32>,
@@ -186,6 +200,16 @@ impl Options {
             spps
         });
         let scenes = or_all(cli.scenes, all_scenes);
+        let lights = or_all(cli.lights, vec![Light::default()]);
+        if lights.len() > 1
+            && let Some(scene) = scenes.iter().find(|s| !path_traced(s))
+        {
+            let names: Vec<&str> = lights.iter().map(|l| l.name()).collect();
+            return Err(Failure::Input(format!(
+                "--light {} compares light sampling in cornell only, not in {scene}: add --scene cornell",
+                names.join(",")
+            )));
+        }
         let frames = cli.frames.unwrap_or_else(|| {
             let most = scenes.iter().map(|s| s.default_frames()).max();
             most.unwrap_or(1)
@@ -211,6 +235,7 @@ impl Options {
             size: cli.size,
             filters,
             modes,
+            lights,
             frame: cli.frame,
             frames: cli.frames,
             target: cli.target,
@@ -248,6 +273,15 @@ impl Options {
     /// Frames per row for `scene`.
     pub fn frames_for(&self, scene: SceneKind) -> u32 {
         self.frames.unwrap_or_else(|| scene.default_frames())
+    }
+
+    /// How `scene` samples its light, one render per entry: the `--light`
+    /// list for the path-traced scene, the default (unused) for the others.
+    pub fn lights_for(&self, scene: SceneKind) -> Vec<Light> {
+        match scene.build(1, 1) {
+            Built::PathTraced => self.lights.clone(),
+            Built::Film(_) => vec![Light::default()],
+        }
     }
 
     /// The frames of `scene`'s rows, in order: `frame..=frame + frames -
@@ -291,6 +325,10 @@ fn parse_filter(text: &str) -> Result<Filter, String> {
 }
 
 fn parse_filter_mode(text: &str) -> Result<FilterMode, String> {
+    text.parse()
+}
+
+fn parse_light(text: &str) -> Result<Light, String> {
     text.parse()
 }
 
@@ -461,6 +499,26 @@ pub(crate) mod tests {
         for sampler in TracerSampler::all() {
             assert!(message.contains(sampler.name()), "{sampler}: {message}");
         }
+    }
+
+    #[test]
+    fn light_sampling_is_solid_angle_unless_asked() {
+        assert_eq!(run_options(&[]).lights, [Light::SolidAngle]);
+        let options = run_options(&["--scene", "cornell", "--light", "area,solid-angle,area"]);
+        assert_eq!(options.lights, [Light::Area, Light::SolidAngle]);
+        assert_eq!(options.lights_for(SceneKind::Cornell), options.lights);
+        assert_eq!(
+            run_options(&["--light", "Area"]).lights_for(SceneKind::Moire),
+            [Light::SolidAngle]
+        );
+        let message = usage_error(&["--scene", "cornell", "--light", "sphere"]);
+        assert!(
+            message.contains("\"sphere\" is not a light sampling: use solid-angle or area"),
+            "{message}"
+        );
+        // A comparison renders cornell alone.
+        let message = usage_error(&["--light", "area,solid-angle"]);
+        assert!(message.contains("add --scene cornell"), "{message}");
     }
 
     #[test]

@@ -51,14 +51,26 @@ use indicatif::{ProgressBar, ProgressStyle};
 
 use crate::analysis::{blurred_rmse, error_spectrum};
 use crate::cli::Options;
+use crate::cornell::Light;
 use crate::output::{
     Crop, Picture, Series, Tile, contact_sheet, spectrum_svg, stack_rows, trade_plot_svg,
     viewing_zoom,
 };
 use crate::render::{FILM_DIMENSION, Filter, FilterMode, Image, TracerSampler, render};
-use crate::report::{Row, docs_page_from, json_report, low_frequency_power, markdown_tables};
+use crate::report::{
+    Row, docs_block_name, docs_page_from, json_report, low_frequency_power, markdown_tables,
+};
 use crate::scenes::{Built, SceneKind};
 use crate::shared::Failure;
+
+/// A row's `top_rmse` is over the top `1 / TOP_ROWS_DIVISOR` of the film's
+/// rows, leaving out the pixels where the reference passes
+/// [`TOP_BRIGHTEST`] in a channel: in cornell the ceiling and the top of
+/// the walls and back wall, the shading points nearest the light, without
+/// the light itself and its defocused edge (whose error comes from the
+/// film and lens, not from light sampling).
+const TOP_ROWS_DIVISOR: u32 = 4;
+const TOP_BRIGHTEST: f32 = 1.0;
 
 /// Bins of the radially averaged error spectrum.
 const SPECTRUM_BINS: usize = 48;
@@ -97,7 +109,8 @@ fn run(options: &Options, stdout: &mut dyn Write) -> Result<(), Failure> {
         .scenes
         .iter()
         .map(|&s| {
-            options.sizes_for(s).len()
+            options.lights_for(s).len()
+                * options.sizes_for(s).len()
                 * options.spps_for(s).len()
                 * options.samplers_for(s).len()
                 * options.frames_for(s) as usize
@@ -119,17 +132,19 @@ fn run(options: &Options, stdout: &mut dyn Write) -> Result<(), Failure> {
     for &filter in &options.filters {
         for &mode in &options.modes {
             for &scene_kind in &options.scenes {
+                let lights = options.lights_for(scene_kind);
                 for (width, height) in options.sizes_for(scene_kind) {
-                    let run = run_scene(
+                    for run in run_scene(
                         options,
                         &progress,
                         scene_kind,
                         width,
                         height,
-                        (filter, mode),
-                    )?;
-                    rows.extend(run.rows.iter().cloned());
-                    runs.push(run);
+                        (filter, mode, &lights),
+                    )? {
+                        rows.extend(run.rows.iter().cloned());
+                        runs.push(run);
+                    }
                 }
             }
         }
@@ -146,7 +161,11 @@ fn run(options: &Options, stdout: &mut dyn Write) -> Result<(), Failure> {
     }
     if let Some(path) = &options.docs {
         let existing = shared::read_page(path)?;
-        fs::write(path, docs_page_from(&existing, &tables)).map_err(|e| write_error(path, e))?;
+        fs::write(
+            path,
+            docs_page_from(&existing, &tables, docs_block_name(options)),
+        )
+        .map_err(|e| write_error(path, e))?;
     }
     progress.note(&format!(
         "done in {:.1} s on {threads} threads",
@@ -171,51 +190,74 @@ struct SceneRun {
 }
 
 /// Renders one scene at one size under `filter` and `mode` with every
-/// requested sampler and count, and writes its pictures.
+/// requested sampler and count, once per light sampling in `lights`, and
+/// writes its pictures: one run per light. The lights take turns at each
+/// sampler and count, so their frame times are measured seconds apart and
+/// a change in the machine's load falls on both alike.
 fn run_scene(
     options: &Options,
     progress: &Progress,
     kind: SceneKind,
     width: u32,
     height: u32,
-    (filter, mode): (Filter, FilterMode),
-) -> Result<SceneRun, Failure> {
-    let job = SceneJob::prepare(options, progress, kind, width, height, filter, mode)?;
-    let mut rows = Vec::new();
-    let mut firsts = Vec::new();
+    (filter, mode, lights): (Filter, FilterMode, &[Light]),
+) -> Result<Vec<SceneRun>, Failure> {
+    let jobs = lights
+        .iter()
+        .map(|&light| {
+            SceneJob::prepare(
+                options,
+                progress,
+                kind,
+                width,
+                height,
+                (filter, mode, light),
+            )
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let mut rows = vec![Vec::new(); jobs.len()];
+    let mut firsts = vec![Vec::new(); jobs.len()];
     for spp in options.spps_for(kind) {
-        let mut frames = Vec::new();
+        let mut frames: Vec<Vec<Frames>> = jobs.iter().map(|_| Vec::new()).collect();
         for sampler in options.samplers_for(kind) {
-            if let Some(f) = job.measure(sampler, spp)? {
-                rows.push(f.row.clone());
-                frames.push(f);
+            for (j, job) in jobs.iter().enumerate() {
+                if let Some(f) = job.measure(sampler, spp)? {
+                    rows[j].push(f.row.clone());
+                    frames[j].push(f);
+                }
             }
         }
-        // Nothing to show if every sampler rejected this count.
-        if let Some(first) = frames.first() {
-            job.write_sheets(spp, &frames)?;
-            firsts.push((
-                spp,
-                first.row.sampler,
-                first.image.clone(),
-                first.first_rmse,
-            ));
+        for (j, job) in jobs.iter().enumerate() {
+            // Nothing to show if every sampler rejected this count.
+            if let Some(first) = frames[j].first() {
+                job.write_sheets(spp, &frames[j])?;
+                firsts[j].push((
+                    spp,
+                    first.row.sampler,
+                    first.image.clone(),
+                    first.first_rmse,
+                ));
+            }
         }
     }
-    if !rows.is_empty() {
-        job.write_trade_plot(&rows)?;
+    let mut runs = Vec::new();
+    for ((job, rows), firsts) in jobs.into_iter().zip(rows).zip(firsts) {
+        if !rows.is_empty() {
+            job.write_trade_plot(&rows)?;
+        }
+        progress.note(&format!("{}: wrote {}", job.label, job.dir.display()));
+        runs.push(SceneRun {
+            kind,
+            width,
+            height,
+            filter,
+            mode,
+            rows,
+            reference: job.reference,
+            firsts,
+        });
     }
-    progress.note(&format!("{}: wrote {}", job.label, job.dir.display()));
-    Ok(SceneRun {
-        kind,
-        width,
-        height,
-        filter,
-        mode,
-        rows,
-        reference: job.reference,
-        firsts,
-    })
+    Ok(runs)
 }
 
 /// `filters-<scene>-<W>x<H>-<spp>spp.png` under `--out`: per scene, size
@@ -303,8 +345,10 @@ struct SceneJob<'a> {
     height: u32,
     filter: Filter,
     mode: FilterMode,
-    /// `<scene>-<W>x<H>-<filter>`, with `-importance` for that mode, the
-    /// directory's name.
+    /// How the path-traced scene samples its light (unused by the others).
+    light: Light,
+    /// `<scene>-<W>x<H>-<filter>`, with `-importance` for that mode and
+    /// `-area-light` for cornell's area sampling, the directory's name.
     label: String,
     dir: PathBuf,
     scene: Built,
@@ -333,13 +377,16 @@ impl<'a> SceneJob<'a> {
         kind: SceneKind,
         width: u32,
         height: u32,
-        filter: Filter,
-        mode: FilterMode,
+        (filter, mode, light): (Filter, FilterMode, Light),
     ) -> Result<Self, Failure> {
-        let label = match mode {
+        let mut label = match mode {
             FilterMode::Weighted => format!("{kind}-{width}x{height}-{filter}"),
             _ => format!("{kind}-{width}x{height}-{filter}-{mode}"),
         };
+        let path_traced = matches!(kind.build(1, 1), Built::PathTraced);
+        if path_traced && light != Light::default() {
+            label.push_str(&format!("-{light}-light"));
+        }
         let dir = options.out.join(&label);
         fs::create_dir_all(&dir).map_err(|e| write_error(&dir, e))?;
         let scene = kind.build(width, height);
@@ -368,6 +415,7 @@ impl<'a> SceneJob<'a> {
             height,
             filter,
             mode,
+            light,
             label,
             dir,
             scene,
@@ -384,6 +432,7 @@ impl<'a> SceneJob<'a> {
         let options = self.options;
         let (width, height) = (self.width, self.height);
         let mut squares = (0.0, 0.0);
+        let mut top_squares = 0.0;
         let mut spectrum = vec![0.0; SPECTRUM_BINS];
         let mut first: Option<(Image, f64, f64)> = None;
         let frames = options.frames_for(self.kind);
@@ -410,9 +459,14 @@ impl<'a> SceneJob<'a> {
                     self.filter,
                     self.mode,
                 ),
-                Built::PathTraced => {
-                    path::render(width, height, spp, frame_sampler, sampler.film_lens())
-                }
+                Built::PathTraced => path::render(
+                    width,
+                    height,
+                    spp,
+                    frame_sampler,
+                    sampler.film_lens(),
+                    self.light,
+                ),
             };
             // Only the first frame is timed; the others only add to the errors.
             let (image, seconds) = if offset == 0 {
@@ -422,6 +476,12 @@ impl<'a> SceneJob<'a> {
             };
             let rmse = image.rmse(&self.reference);
             squares.0 += rmse * rmse;
+            let top_pixels = (height.div_ceil(TOP_ROWS_DIVISOR) * width) as usize;
+            let reference = &self.reference.pixels;
+            let top = image.rmse_where(&self.reference, |i| {
+                i < top_pixels && reference[i].iter().all(|&v| v <= TOP_BRIGHTEST)
+            });
+            top_squares += top * top;
             let blurred = blurred_rmse(&image, &self.reference);
             squares.1 += blurred * blurred;
             let frame_spectrum = error_spectrum(&image, &self.reference, SPECTRUM_BINS);
@@ -457,7 +517,9 @@ impl<'a> SceneJob<'a> {
                 .fold([f64::INFINITY, f64::NEG_INFINITY], |[low, high], &v| {
                     [low.min(f64::from(v)), high.max(f64::from(v))]
                 }),
+            light: matches!(self.scene, Built::PathTraced).then_some(self.light),
             rmse: (squares.0 / count).sqrt(),
+            top_rmse: (top_squares / count).sqrt(),
             blurred_rmse: (squares.1 / count).sqrt(),
             low_power: low_frequency_power(&spectrum),
             seconds,

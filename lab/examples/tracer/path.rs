@@ -11,14 +11,16 @@
 //!
 //! The reference renders [`REFERENCE_SPP`] samples of `sobol` per pixel,
 //! every root moved to the branch [`REFERENCE_KEY`], so it shares no pattern
-//! with a compared frame, whatever its frame number. It is cached under `out/` in a
-//! file named after a fingerprint of the scene and path tracer, so a change
-//! to either recomputes it.
+//! with a compared frame, whatever its frame number, and samples the light
+//! by area ([`REFERENCE_LIGHT`]) whichever `--light` the frames use. It is
+//! cached under `out/` in a file named after a fingerprint of the scene and
+//! of the path tracer as the reference runs it, so a change to either
+//! recomputes it.
 
 use wellspread::glam::Vec4;
 use wellspread::{AnyPixelSampler, Domain, PixelSampler, PixelSamplerKind, SamplerKind};
 
-use crate::cornell::{PathSamples, SampleSource, render_cornell};
+use crate::cornell::{Light, PathSamples, SampleSource, render_cornell};
 use crate::render::Image;
 
 /// How a path's film offset and lens point are drawn from its root domain.
@@ -93,13 +95,15 @@ impl<P: PixelSampler + Copy> PathSamples for DomainSamples<P> {
 }
 
 /// One frame of the Cornell box: samples `0..spp` of every pixel of
-/// `sampler`, film and lens drawn as `film_lens` says, box filter.
+/// `sampler`, film and lens drawn as `film_lens` says, the light sampled
+/// as `light` says, box filter.
 pub fn render(
     width: u32,
     height: u32,
     spp: u32,
     sampler: AnyPixelSampler,
     film_lens: FilmLens,
+    light: Light,
 ) -> Image {
     let source = Domains {
         sampler,
@@ -109,7 +113,7 @@ pub fn render(
     Image {
         width,
         height,
-        pixels: render_cornell(width, height, spp, &source),
+        pixels: render_cornell(width, height, spp, &source, light),
     }
 }
 
@@ -118,6 +122,12 @@ pub fn render(
 /// error, at Monte Carlo's rate, is then a sixteenth of a 16-spp frame's,
 /// so it inflates that frame's RMSE by about 0.2%.
 pub const REFERENCE_SPP: u32 = 4096;
+
+/// How the reference samples the light: by area, whatever the frames use.
+/// Both estimators converge to the same image, so the reference serves
+/// frames of either, and a reference made apart from the estimator a frame
+/// is measured with shares none of its sampling code.
+pub const REFERENCE_LIGHT: Light = Light::Area;
 
 /// The branch every reference sample's root moves to ("Refr").
 pub const REFERENCE_KEY: u32 = 0x5265_6672;
@@ -141,7 +151,7 @@ pub fn reference(width: u32, height: u32) -> Image {
     Image {
         width,
         height,
-        pixels: render_cornell(width, height, REFERENCE_SPP, &source),
+        pixels: render_cornell(width, height, REFERENCE_SPP, &source, REFERENCE_LIGHT),
     }
 }
 
@@ -152,7 +162,7 @@ pub fn reference(width: u32, height: u32) -> Image {
 /// it is never stale.
 pub fn fingerprint() -> u32 {
     let source = reference_source(4, 8, 8);
-    let image = render_cornell(8, 8, 4, &source);
+    let image = render_cornell(8, 8, 4, &source, REFERENCE_LIGHT);
     REFERENCE_SPP
         .to_le_bytes()
         .into_iter()
@@ -178,7 +188,16 @@ mod tests {
         let (width, height) = (24, 20);
         for sampler in TracerSampler::all() {
             let frame = sampler.build(4, width, height, 3).unwrap();
-            let draw = || render(width, height, 4, frame, sampler.film_lens());
+            let draw = || {
+                render(
+                    width,
+                    height,
+                    4,
+                    frame,
+                    sampler.film_lens(),
+                    Light::SolidAngle,
+                )
+            };
             let (a, b) = (one.install(draw), two.install(draw));
             assert_eq!(pixel_bits(&a.pixels), pixel_bits(&b.pixels), "{sampler}");
         }

@@ -26,15 +26,23 @@ pub struct Image {
 impl Image {
     /// Root-mean-square difference over every pixel and channel, in f64.
     pub fn rmse(&self, other: &Image) -> f64 {
+        self.rmse_where(other, |_| true)
+    }
+
+    /// The RMSE over the pixels whose row-major index `keep` accepts; 0
+    /// where it accepts none.
+    pub fn rmse_where(&self, other: &Image, keep: impl Fn(usize) -> bool) -> f64 {
         assert_eq!((self.width, self.height), (other.width, other.height));
-        let sum: f64 = self
-            .pixels
-            .iter()
-            .zip(&other.pixels)
-            .flat_map(|(a, b)| (0..3).map(move |c| f64::from(a[c]) - f64::from(b[c])))
-            .map(|d| d * d)
-            .sum();
-        (sum / (3 * self.pixels.len()) as f64).sqrt()
+        let (mut sum, mut count) = (0.0, 0usize);
+        for (i, (a, b)) in self.pixels.iter().zip(&other.pixels).enumerate() {
+            if keep(i) {
+                count += 1;
+                sum += (0..3)
+                    .map(|c| (f64::from(a[c]) - f64::from(b[c])).powi(2))
+                    .sum::<f64>();
+            }
+        }
+        (sum / (3 * count.max(1)) as f64).sqrt()
     }
 }
 

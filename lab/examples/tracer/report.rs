@@ -7,6 +7,7 @@ use std::fs;
 use wellspread::{PixelSamplerKind, SamplerKind};
 
 use crate::cli::Options;
+use crate::cornell::Light;
 use crate::render::{Filter, FilterMode, SOBOL, TracerSampler};
 use crate::scenes::SceneKind;
 
@@ -24,8 +25,13 @@ pub struct Row {
     /// channel: a filter with negative lobes overshoots the scene's range
     /// at edges (ringing).
     pub reference_range: [f64; 2],
+    /// How the path-traced scene sampled its light; `None` for the others.
+    pub light: Option<Light>,
     /// Root-mean-square over the frames of each frame's RMSE.
     pub rmse: f64,
+    /// The same over the top quarter of the film's rows only, the light's
+    /// own pixels left out (see `TOP_ROWS_DIVISOR` in main.rs).
+    pub top_rmse: f64,
     /// The same after the viewing blur ([`blurred_rmse`]).
     pub blurred_rmse: f64,
     /// Mean error power below 1/16 cycle per pixel, averaged over the
@@ -85,6 +91,9 @@ pub fn format_ms(seconds: f64) -> String {
 /// each spp, then the spp and time needed to reach the target RMSE; then
 /// the claims this run has the evidence for.
 pub fn markdown_tables(options: &Options, rows: &[Row]) -> String {
+    if options.lights.len() > 1 {
+        return light_tables(options, rows);
+    }
     if options.filters.len() * options.modes.len() > 1 {
         return filter_tables(options, rows);
     }
@@ -405,20 +414,105 @@ fn joint_versus_pairs(rows: &[Row]) -> Option<String> {
     Some(text)
 }
 
+/// The run of several light samplings (cornell only): one table per size,
+/// a line per sampler and count with each light's RMSE / blurred RMSE, the
+/// RMSE over the film's top quarter without the light's own pixels (the
+/// ceiling and the top of the walls, the shading points nearest the
+/// light) and ms per frame, then
+/// each other light against the first: the RMSE ratio, the top-quarter
+/// RMSE ratio, the time ratio and the efficiency ratio RMSE^2 x time,
+/// below 1 where the other light sampling is ahead.
+fn light_tables(options: &Options, rows: &[Row]) -> String {
+    let lights = &options.lights;
+    let (first, others) = (lights[0], &lights[1..]);
+    let mut text = String::new();
+    for (scene, width, height) in jobs(rows) {
+        let frames = frames_label(options.frames_for(scene));
+        let _ = writeln!(
+            text,
+            "\n### {scene} {width}x{height}, light sampling: RMSE / blurred RMSE, top-quarter RMSE (the light left out), ms per frame ({frames}); ratios {} / {first}\n",
+            others
+                .iter()
+                .map(|l| l.name())
+                .collect::<Vec<_>>()
+                .join(", "),
+        );
+        let mut header = String::from("| sampler | spp |");
+        let mut rule = String::from("| --- | ---: |");
+        for light in lights {
+            let _ = write!(header, " {light} | {light} top | {light} ms |");
+            rule.push_str(" ---: | ---: | ---: |");
+        }
+        for light in others {
+            let _ = write!(
+                header,
+                " RMSE ratio {light} | top ratio {light} | time ratio {light} | RMSE^2 x time ratio {light} |"
+            );
+            rule.push_str(" ---: | ---: | ---: | ---: |");
+        }
+        let _ = writeln!(text, "{header}\n{rule}");
+        for kind in options.samplers_for(scene) {
+            for spp in options.spps_for(scene) {
+                let find = |light: Light| {
+                    rows.iter().find(|r| {
+                        (r.scene, r.width, r.height, r.sampler, r.spp, r.light)
+                            == (scene, width, height, kind, spp, Some(light))
+                    })
+                };
+                let mut line = format!("| {kind} | {spp} |");
+                for &light in lights {
+                    match find(light) {
+                        Some(r) => {
+                            let _ = write!(
+                                line,
+                                " {} / {} | {} | {} |",
+                                format_error(r.rmse),
+                                format_error(r.blurred_rmse),
+                                format_error(r.top_rmse),
+                                format_ms(r.seconds)
+                            );
+                        }
+                        None => line.push_str(" skipped | | |"),
+                    }
+                }
+                for &light in others {
+                    match (find(first), find(light)) {
+                        (Some(a), Some(b)) => {
+                            let _ = write!(
+                                line,
+                                " {:.4} | {:.3} | {:.2} | {:.2} |",
+                                b.rmse / a.rmse,
+                                b.top_rmse / a.top_rmse,
+                                b.seconds / a.seconds,
+                                (b.rmse * b.rmse * b.seconds) / (a.rmse * a.rmse * a.seconds),
+                            );
+                        }
+                        _ => line.push_str(" - | - | - | - |"),
+                    }
+                }
+                let _ = writeln!(text, "{line}");
+            }
+        }
+    }
+    text
+}
+
 /// The rows as a JSON array.
 pub fn json_report(rows: &[Row]) -> String {
     let items: Vec<String> = rows
         .iter()
         .map(|r| {
             format!(
-                r#"  {{"scene": "{}", "filter": "{}", "filter_mode": "{}", "sampler": "{}", "spp": {}, "rmse": {:e}, "blurred_rmse": {:e}, "low_frequency_power": {}, "seconds": {:e}, "frames": {}, "width": {}, "height": {}}}"#,
+                r#"  {{"scene": "{}", "filter": "{}", "filter_mode": "{}", "light": {}, "sampler": "{}", "spp": {}, "rmse": {:e}, "blurred_rmse": {:e}, "top_rmse": {:e}, "low_frequency_power": {}, "seconds": {:e}, "frames": {}, "width": {}, "height": {}}}"#,
                 r.scene,
                 r.filter,
                 r.mode,
+                r.light.map_or("null".to_owned(), |l| format!("\"{l}\"")),
                 r.sampler.name(),
                 r.spp,
                 r.rmse,
                 r.blurred_rmse,
+                r.top_rmse,
                 // JSON has no NaN: a film too small for a spectrum is null.
                 if r.low_power.is_finite() {
                     format!("{:e}", r.low_power)
@@ -435,10 +529,30 @@ pub fn json_report(rows: &[Row]) -> String {
     format!("[\n{}\n]\n", items.join(",\n"))
 }
 
-/// Marks the part of a `--docs` page the tracer owns: on a re-run only the
-/// text between the markers is replaced, so prose around it survives.
-const DOCS_BEGIN: &str = "<!-- tracer: generated from here; edit outside the markers -->";
-const DOCS_END: &str = "<!-- tracer: generated up to here -->";
+/// Mark the part of a `--docs` page the tracer owns: on a re-run only the
+/// text between the markers of the run's block is replaced, so prose (and
+/// the other block) around it survives. `block` is [`DOCS_BLOCK`], or
+/// [`LIGHT_BLOCK`] for a run comparing light sampling.
+fn docs_markers(block: &str) -> (String, String) {
+    (
+        format!("<!-- {block}: generated from here; edit outside the markers -->"),
+        format!("<!-- {block}: generated up to here -->"),
+    )
+}
+
+/// The block of the default run's tables.
+pub const DOCS_BLOCK: &str = "tracer";
+/// The block of the light sampling comparison (`--light area,solid-angle`).
+pub const LIGHT_BLOCK: &str = "tracer light";
+
+/// The `--docs` block a run writes.
+pub fn docs_block_name(options: &Options) -> &'static str {
+    if options.lights.len() > 1 {
+        LIGHT_BLOCK
+    } else {
+        DOCS_BLOCK
+    }
+}
 
 /// The command that reproduces this run, as a shell line.
 fn command_line() -> String {
@@ -479,24 +593,26 @@ fn machine() -> String {
     )
 }
 
-/// The generated block of a `--docs` page.
-fn docs_block(tables: &str) -> String {
+/// The generated block `name` of a `--docs` page.
+fn docs_block(tables: &str, name: &str) -> String {
+    let (begin, end) = docs_markers(name);
     format!(
-        "{DOCS_BEGIN}\n\nRegenerate with:\n\n```sh\n{}\n```\n\nMachine: {}. Times are the fastest of repeated renders of one frame; other work on the machine inflates them.\n{tables}\n{DOCS_END}\n",
+        "{begin}\n\nRegenerate with:\n\n```sh\n{}\n```\n\nMachine: {}. Times are the fastest of repeated renders of one frame; other work on the machine inflates them.\n{tables}\n{end}\n",
         command_line(),
         machine()
     )
 }
 
-/// The `--docs` page: `existing` with its generated block replaced, or
-/// with the block appended when it has none (a new page when empty).
-pub fn docs_page_from(existing: &str, tables: &str) -> String {
-    let block = docs_block(tables);
-    match (existing.find(DOCS_BEGIN), existing.find(DOCS_END)) {
+/// The `--docs` page: `existing` with its generated block `name` replaced,
+/// or with the block appended when it has none (a new page when empty).
+pub fn docs_page_from(existing: &str, tables: &str, name: &str) -> String {
+    let block = docs_block(tables, name);
+    let (begin_marker, end_marker) = docs_markers(name);
+    match (existing.find(&begin_marker), existing.find(&end_marker)) {
         (Some(begin), Some(end)) if end > begin => format!(
             "{}{block}{}",
             &existing[..begin],
-            existing[end + DOCS_END.len()..].trim_start_matches('\n')
+            existing[end + end_marker.len()..].trim_start_matches('\n')
         ),
         _ if existing.trim().is_empty() => format!("# Tracer measurements\n\n{block}"),
         // A page of prose with no block yet: the block goes at its end.
@@ -527,7 +643,9 @@ mod tests {
             filter: Filter::Box,
             mode: FilterMode::Weighted,
             reference_range: [0.0, 1.0],
+            light: None,
             rmse,
+            top_rmse: rmse,
             blurred_rmse: rmse / 2.0,
             low_power: rmse * rmse,
             seconds: 0.001,
@@ -573,17 +691,23 @@ mod tests {
 
     #[test]
     fn docs_pages_keep_the_prose_around_the_generated_block() {
-        let fresh = docs_page_from("", "TABLES");
+        let fresh = docs_page_from("", "TABLES", DOCS_BLOCK);
         assert!(fresh.starts_with("# Tracer measurements") && fresh.contains("TABLES"));
-        let page =
-            format!("# Mine\n\nprose before\n\n{DOCS_BEGIN}\nold\n{DOCS_END}\n\nprose after\n");
-        let updated = docs_page_from(&page, "NEW");
+        let (begin, end) = docs_markers(DOCS_BLOCK);
+        let (light_begin, light_end) = docs_markers(LIGHT_BLOCK);
+        let page = format!(
+            "# Mine\n\nprose before\n\n{begin}\nold\n{end}\n\nprose after\n\n{light_begin}\nlight\n{light_end}\n"
+        );
+        let updated = docs_page_from(&page, "NEW", DOCS_BLOCK);
         assert!(updated.starts_with("# Mine\n\nprose before\n\n"));
         assert!(updated.contains("NEW") && !updated.contains("old"));
-        assert!(updated.ends_with("prose after\n"));
+        assert!(updated.contains("prose after\n") && updated.contains("\nlight\n"));
         assert!(updated.contains("cargo run --release -p wellspread-lab --example tracer"));
-        let appended = docs_page_from("# Prose\n\ntext\n", "T");
-        assert!(appended.starts_with("# Prose\n\ntext\n\n") && appended.contains(DOCS_END));
+        // The light block is replaced on its own, the default one kept.
+        let lit = docs_page_from(&updated, "LIT", LIGHT_BLOCK);
+        assert!(lit.contains("NEW") && lit.contains("LIT") && !lit.contains("\nlight\n"));
+        let appended = docs_page_from("# Prose\n\ntext\n", "T", DOCS_BLOCK);
+        assert!(appended.starts_with("# Prose\n\ntext\n\n") && appended.contains(&end));
     }
 
     #[test]

@@ -85,6 +85,18 @@ impl Rect {
         size.x * size.y
     }
 
+    /// The rectangle as `corner + s ex + t ey`, `s, t` in `[0, 1]`: `corner`
+    /// is [`Rect::point`] of `(0, 0)`, `ex` and `ey` run along the next
+    /// two axes, so `(s, t)` is the `u` of [`Rect::point`].
+    pub(super) fn edges(&self) -> (Vec3, Vec3, Vec3) {
+        let (a, b) = self.other_axes();
+        let size = self.max - self.min;
+        let (mut ex, mut ey) = (Vec3::ZERO, Vec3::ZERO);
+        ex[a] = size.x;
+        ey[b] = size.y;
+        (self.point(Vec2::ZERO), ex, ey)
+    }
+
     /// The point of the rectangle at `u` in `[0, 1)^2`, uniform in area.
     pub(super) fn point(&self, u: Vec2) -> Vec3 {
         let (a, b) = self.other_axes();
