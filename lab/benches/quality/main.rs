@@ -34,6 +34,8 @@ use wellspread::metrics;
 use wellspread::primitives::pattern_seed;
 use wellspread::{AnySampler, Sampler2D, SamplerKind};
 
+#[path = "../../examples/shared/machine.rs"]
+mod machine;
 mod quality_4d;
 
 /// How big a run is.
@@ -666,15 +668,7 @@ const DOCS_PLOTS: [(&str, &str, &str); 1] = [(
 /// The generated block: the machine and run time, the tables (headings one
 /// level down, under the page's own), and the copied plots.
 fn docs_block(config: &Config, tables: &str, seconds: f64) -> String {
-    let cpu = std::fs::read_to_string("/proc/cpuinfo")
-        .ok()
-        .and_then(|info| {
-            info.lines().find_map(|l| {
-                l.strip_prefix("model name")
-                    .map(|v| v.trim_start_matches([' ', '\t', ':']).to_owned())
-            })
-        })
-        .unwrap_or_else(|| "unknown CPU".to_owned());
+    let cpu = machine::cpu_model().unwrap_or_else(|| "unknown CPU".to_owned());
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
     let mut block = String::new();
     let _ = writeln!(

@@ -7,6 +7,8 @@ use criterion::criterion_main;
 
 mod domain_benches;
 mod kensler;
+#[path = "../../examples/shared/machine.rs"]
+mod machine;
 mod metric_benches;
 mod ratio_benches;
 mod sampler_benches;

@@ -277,18 +277,6 @@ fn rustc_version() -> String {
         .map_or_else(|| "unknown".to_owned(), |v| v.trim().to_owned())
 }
 
-fn cpu_model() -> String {
-    std::fs::read_to_string("/proc/cpuinfo")
-        .ok()
-        .and_then(|info| {
-            info.lines()
-                .find(|l| l.starts_with("model name"))
-                .and_then(|l| l.split_once(':'))
-                .map(|(_, model)| model.trim().to_owned())
-        })
-        .unwrap_or_else(|| "unknown".to_owned())
-}
-
 /// The x86 vector features this binary was compiled for (what
 /// `target-cpu=native` changes), not what the CPU has.
 fn compiled_features() -> String {
@@ -359,7 +347,11 @@ fn report(since: SystemTime) {
         }
     );
     let _ = writeln!(md, "- target features compiled in: {}", compiled_features());
-    let _ = writeln!(md, "- CPU: {}", cpu_model());
+    let _ = writeln!(
+        md,
+        "- CPU: {}",
+        crate::machine::cpu_model().unwrap_or_else(|| "unknown".to_owned())
+    );
     let _ = writeln!(
         md,
         "\nEach ratio is (time of the sampler) / (time of its baseline): \

@@ -31,6 +31,8 @@
 mod analysis;
 mod cli;
 mod cornell;
+#[path = "../shared/machine.rs"]
+mod machine;
 mod output;
 mod path;
 mod reference;

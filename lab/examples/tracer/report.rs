@@ -2,7 +2,6 @@
 //! claims they support, the JSON report, and the `--docs` page.
 
 use std::fmt::Write as _;
-use std::fs;
 
 use wellspread::{PixelSamplerKind, SamplerKind};
 
@@ -576,15 +575,7 @@ fn command_line() -> String {
 
 /// The CPU model (from /proc/cpuinfo where there is one), OS and threads.
 fn machine() -> String {
-    let cpu = fs::read_to_string("/proc/cpuinfo")
-        .ok()
-        .and_then(|info| {
-            info.lines().find_map(|l| {
-                l.strip_prefix("model name")
-                    .map(|v| v.trim_start_matches([' ', '\t', ':']).to_owned())
-            })
-        })
-        .unwrap_or_else(|| "unknown CPU".to_owned());
+    let cpu = crate::machine::cpu_model().unwrap_or_else(|| "unknown CPU".to_owned());
     format!(
         "{cpu}, {} {}, {} rayon threads",
         std::env::consts::OS,
