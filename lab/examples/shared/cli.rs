@@ -131,6 +131,26 @@ fn one_line(error: &clap::Error) -> String {
     format!("{message} (try --help)")
 }
 
+/// The one of `all` whose `name_of` is `name`, or an error that lists
+/// every name.
+pub fn by_name<T: Copy>(
+    all: &[T],
+    name: &str,
+    name_of: fn(T) -> &'static str,
+    what: &str,
+) -> Result<T, String> {
+    all.iter()
+        .copied()
+        .find(|&item| name_of(item) == name)
+        .ok_or_else(|| {
+            let names: Vec<&str> = all.iter().map(|&item| name_of(item)).collect();
+            format!(
+                "unknown {what} {name:?}; expected one of: {}",
+                names.join(" ")
+            )
+        })
+}
+
 /// `text` quoted and escaped as a Rust string (so a newline cannot split a
 /// one-line message), cut to its first 80 characters with `...` inside the
 /// quotes if longer.

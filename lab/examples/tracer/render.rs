@@ -202,28 +202,8 @@ impl FromStr for FilterMode {
     type Err = String;
 
     fn from_str(name: &str) -> Result<Self, Self::Err> {
-        by_name(&FilterMode::ALL, name, FilterMode::name, "filter mode")
+        crate::shared::by_name(&FilterMode::ALL, name, FilterMode::name, "filter mode")
     }
-}
-
-/// The one of `all` whose `name_of` is `name`, or an error that lists
-/// every name.
-fn by_name<T: Copy>(
-    all: &[T],
-    name: &str,
-    name_of: fn(T) -> &'static str,
-    what: &str,
-) -> Result<T, String> {
-    all.iter()
-        .copied()
-        .find(|&item| name_of(item) == name)
-        .ok_or_else(|| {
-            let names: Vec<&str> = all.iter().map(|&item| name_of(item)).collect();
-            format!(
-                "unknown {what} {name:?}; expected one of: {}",
-                names.join(" ")
-            )
-        })
 }
 
 impl fmt::Display for Filter {
@@ -236,7 +216,7 @@ impl FromStr for Filter {
     type Err = String;
 
     fn from_str(name: &str) -> Result<Self, Self::Err> {
-        by_name(&Filter::ALL, name, Filter::name, "filter")
+        crate::shared::by_name(&Filter::ALL, name, Filter::name, "filter")
     }
 }
 

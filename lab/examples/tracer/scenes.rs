@@ -145,16 +145,7 @@ impl FromStr for SceneKind {
     type Err = String;
 
     fn from_str(name: &str) -> Result<Self, Self::Err> {
-        SceneKind::ALL
-            .into_iter()
-            .find(|kind| kind.name() == name)
-            .ok_or_else(|| {
-                let names: Vec<&str> = SceneKind::ALL.iter().map(|kind| kind.name()).collect();
-                format!(
-                    "unknown scene {name:?}; expected one of: {}",
-                    names.join(" ")
-                )
-            })
+        crate::shared::by_name(&SceneKind::ALL, name, SceneKind::name, "scene")
     }
 }
 
