@@ -621,30 +621,17 @@ fn a_new_pixel_sampler_plugs_in_with_three_methods() {
 /// and a later draw and for a branch.
 #[test]
 fn zsobol_domain_draws_keep_quad_error_cancellation() {
-    let exact = 0.557_746_285_351_033_f64;
     let quad_error = |sampler: &AnyPixelSampler, spp: u32, path: &[u32], skip: u32| -> f64 {
-        let mut sum_squares = 0.0;
-        for qy in 0..32 {
-            for qx in 0..32 {
-                let mut sum = 0.0;
-                for [dx, dy] in [[0, 0], [1, 0], [0, 1], [1, 1]] {
-                    for i in 0..spp {
-                        let mut d = sampler.start([2 * qx + dx, 2 * qy + dy], i);
-                        for &k in path {
-                            d = d.branch(k);
-                        }
-                        for _ in 0..skip {
-                            d.next_2d();
-                        }
-                        let p = d.next_2d();
-                        sum += (-(p.x * p.x + p.y * p.y) as f64).exp();
-                    }
-                }
-                let error = sum / f64::from(4 * spp) - exact;
-                sum_squares += error * error;
+        crate::quad_error(spp, |pixel, i| {
+            let mut d = sampler.start(pixel, i);
+            for &k in path {
+                d = d.branch(k);
             }
-        }
-        (sum_squares / 1024.0).sqrt()
+            for _ in 0..skip {
+                d.next_2d();
+            }
+            d.next_2d()
+        })
     };
     for spp in [4, 16] {
         for frame in [0, 1] {

@@ -2,7 +2,8 @@
 //! `PixelSampler` implementations keep their per-pixel guarantees in every
 //! dimension pair, and dimension pairs are decorrelated; `domain` checks the
 //! `Domain` draws, branches and splits. The dependence measure the
-//! decorrelation tests share is below.
+//! decorrelation tests share, and the quad error the screen-space tests
+//! share, are below.
 
 mod blue_noise;
 mod domain;
@@ -74,4 +75,28 @@ pub fn dependence(sampler: &impl PixelSampler, a: u32, b: u32) -> (f64, f64) {
             r.max(correlation(&pairs).abs()),
         )
     })
+}
+
+/// The error of each 2 x 2 quad's mean estimate of a smooth integrand,
+/// the same in every pixel, root-mean-square over the quads of a 64 x 64
+/// film: what a blur keeps of the per-pixel error. `point(pixel, index)`
+/// is the sample's point (a `sample_pixel`, or a draw of a domain).
+pub fn quad_error(spp: u32, point: impl Fn([u32; 2], u32) -> Vec2) -> f64 {
+    // exp(-x^2 - y^2) over [0, 1)^2 (Christensen et al. 2018's Gaussian).
+    let exact = 0.557_746_285_351_033_f64;
+    let mut sum_squares = 0.0;
+    for qy in 0..32 {
+        for qx in 0..32 {
+            let mut sum = 0.0;
+            for [dx, dy] in [[0, 0], [1, 0], [0, 1], [1, 1]] {
+                for i in 0..spp {
+                    let p = point([2 * qx + dx, 2 * qy + dy], i);
+                    sum += (-(p.x * p.x + p.y * p.y) as f64).exp();
+                }
+            }
+            let error = sum / f64::from(4 * spp) - exact;
+            sum_squares += error * error;
+        }
+    }
+    (sum_squares / 1024.0).sqrt()
 }

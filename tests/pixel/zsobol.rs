@@ -97,28 +97,11 @@ fn zsobol_dimension_pairs_are_decorrelated() {
     }
 }
 
-/// The error of each 2 x 2 quad's mean estimate of a smooth integrand,
-/// the same in every pixel, root-mean-square over the quads of a 64 x 64
-/// film: what a blur keeps of the per-pixel error.
+/// [`quad_error`](crate::quad_error) of `sample_pixel`'s first pair.
 fn quad_error(sampler: &impl PixelSampler) -> f64 {
-    // exp(-x^2 - y^2) over [0, 1)^2 (Christensen et al. 2018's Gaussian).
-    let exact = 0.557_746_285_351_033_f64;
-    let spp = sampler.samples_per_pixel().unwrap();
-    let mut sum_squares = 0.0;
-    for qy in 0..32 {
-        for qx in 0..32 {
-            let mut sum = 0.0;
-            for [dx, dy] in [[0, 0], [1, 0], [0, 1], [1, 1]] {
-                for i in 0..spp {
-                    let p = sampler.sample_pixel([2 * qx + dx, 2 * qy + dy], i, 0);
-                    sum += (-(p.x * p.x + p.y * p.y) as f64).exp();
-                }
-            }
-            let error = sum / f64::from(4 * spp) - exact;
-            sum_squares += error * error;
-        }
-    }
-    (sum_squares / 1024.0).sqrt()
+    crate::quad_error(sampler.samples_per_pixel().unwrap(), |pixel, i| {
+        sampler.sample_pixel(pixel, i, 0)
+    })
 }
 
 /// Where neighbouring pixels integrate the same smooth function, the four
