@@ -124,14 +124,41 @@ impl<S: PixelSampler> Domain<S> {
     /// domain; [`PixelSampler::start`] calls this.
     #[inline(always)]
     pub fn start(sampler: S, pixel: [u32; 2], index: u32) -> Self {
+        let root = Self::root(&sampler, pixel, index);
+        Self::at_root(sampler, root)
+    }
+
+    /// [`start`](Self::start) from a borrowed sampler, which is copied
+    /// into the domain once, after `root` and `locate` have read the
+    /// original (passing it by value copies a large sampler such as
+    /// `AnyPixelSampler` twice). [`PixelSampler::start`] calls this.
+    #[inline(always)]
+    pub(crate) fn start_from(sampler: &S, pixel: [u32; 2], index: u32) -> Self
+    where
+        S: Copy,
+    {
+        let root = Self::root(sampler, pixel, index);
+        Self::at_root(*sampler, root)
+    }
+
+    /// The root's `(key, index, pixel_state)`: the sampler's `root`, then
+    /// its `locate`.
+    #[inline(always)]
+    fn root(sampler: &S, pixel: [u32; 2], index: u32) -> (u64, u32, u32) {
         let root = sampler.root(pixel);
         let (index, key) = sampler.locate(index, root.key);
+        (key, index, root.pixel_state)
+    }
+
+    /// The root domain of `sampler` at `(key, index, pixel_state)`.
+    #[inline(always)]
+    const fn at_root(sampler: S, (key, index, pixel_state): (u64, u32, u32)) -> Self {
         Self {
             key,
             index,
             draws: 0,
             dimensions: 0,
-            pixel_state: root.pixel_state,
+            pixel_state,
             sampler,
         }
     }

@@ -218,7 +218,7 @@ pub trait PixelSampler: Send + Sync {
     where
         Self: Sized + Copy,
     {
-        Domain::start(*self, pixel, index)
+        Domain::start_from(self, pixel, index)
     }
 }
 
