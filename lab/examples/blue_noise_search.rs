@@ -35,6 +35,7 @@
 //! a bad or unknown argument stops it before the search starts.
 
 use std::ffi::OsString;
+use std::io::Write;
 use std::process::ExitCode;
 
 use clap::Parser;
@@ -308,17 +309,20 @@ fn main() -> ExitCode {
     let mut stdout = std::io::stdout().lock();
     match parse(std::env::args_os().skip(1), &mut stdout) {
         Ok(Some(args)) => {
-            search(args.restarts as usize, args.sweeps as usize);
-            ExitCode::SUCCESS
+            let columns = search(args.restarts as usize, args.sweeps as usize);
+            let table = columns
+                .iter()
+                .try_for_each(|v| writeln!(stdout, "{:06x} {:06x}", v[0], v[1]));
+            shared::exit("blue_noise_search", shared::to_stdout(table))
         }
         Ok(None) => ExitCode::SUCCESS,
         Err(failure) => shared::exit("blue_noise_search", Err(failure)),
     }
 }
 
-/// The search: prints the table on standard output, progress on standard
-/// error.
-fn search(restarts: usize, sweeps: usize) {
+/// The search: progress on standard error; returns the columns, which
+/// `main` prints as the table.
+fn search(restarts: usize, sweeps: usize) -> [[u32; 2]; 32] {
     let started = std::time::Instant::now();
     let base = blurred(|frame| Padded::new(Sobol::unbounded(), frame));
     let mut g = SearchedColumns.columns();
@@ -385,7 +389,5 @@ fn search(restarts: usize, sweeps: usize) {
             eprintln!("{name}, {integrand}: {}", row.join(" "));
         }
     }
-    for v in &g {
-        println!("{:06x} {:06x}", v[0], v[1]);
-    }
+    g
 }

@@ -15,6 +15,7 @@
 
 use std::ffi::OsString;
 use std::hint::black_box;
+use std::io::Write;
 use std::process::ExitCode;
 
 use clap::Parser;
@@ -213,6 +214,8 @@ fn main() -> ExitCode {
             }
         }
     };
-    println!("{total}");
-    ExitCode::SUCCESS
+    shared::exit(
+        "draw_cost",
+        shared::to_stdout(writeln!(std::io::stdout(), "{total}")),
+    )
 }

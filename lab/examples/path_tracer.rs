@@ -8,6 +8,7 @@
 
 use std::error::Error;
 use std::f32::consts::PI;
+use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -149,8 +150,14 @@ fn main() -> ExitCode {
         eprintln!("path_tracer: {}: {e}", args.out.display());
         return ExitCode::FAILURE;
     }
-    println!("{}", args.out.display());
-    ExitCode::SUCCESS
+    // A closed standard output (`| head`) is not a failure: the PNG is written.
+    match writeln!(io::stdout(), "{}", args.out.display()) {
+        Err(e) if e.kind() != io::ErrorKind::BrokenPipe => {
+            eprintln!("path_tracer: standard output: {e}");
+            ExitCode::FAILURE
+        }
+        _ => ExitCode::SUCCESS,
+    }
 }
 
 /// Writes the RGB `bytes` as a PNG at `path`, making its folder if missing.

@@ -9,10 +9,12 @@
 //!
 //! Without an argument it prints the cost table only. Times are
 //! nanoseconds per call over 2^22 calls on inputs from a fixed-seed PCG,
-//! through `black_box`, single-threaded; they vary with the machine.
+//! through `black_box`, single-threaded; they vary with the machine. A
+//! closed standard output (`warps | head`) stops it quietly.
 
 use std::ffi::OsString;
 use std::hint::black_box;
+use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
@@ -142,7 +144,8 @@ fn panels() -> Vec<Panel> {
     ]
 }
 
-fn write_sheet(path: &Path) -> Result<(), Failure> {
+/// Draws the sheet into `path`, listing each panel's title on `out`.
+fn write_sheet(path: &Path, out: &mut dyn Write) -> Result<(), Failure> {
     let panels = panels();
     let columns = 5;
     let rows = panels.len().div_ceil(columns) as u32;
@@ -178,7 +181,7 @@ fn write_sheet(path: &Path) -> Result<(), Failure> {
                 }
             }
         }
-        println!("panel {k}: {}", panel.title);
+        shared::to_stdout(writeln!(out, "panel {k}: {}", panel.title))?;
     }
     let cannot =
         |e: &dyn std::fmt::Display| Failure::Io(format!("cannot write {}: {e}", path.display()));
@@ -212,18 +215,20 @@ fn main() -> ExitCode {
         Ok(None) => return ExitCode::SUCCESS,
         Err(failure) => return shared::exit("warps", Err(failure)),
     };
+    shared::exit("warps", run(&args, &mut std::io::stdout().lock()))
+}
+
+/// The sheet if asked for, then the cost table, on `out`.
+pub fn run(args: &Args, out: &mut dyn Write) -> Result<(), Failure> {
     if let Some(path) = &args.sheet {
-        if let Err(failure) = write_sheet(path) {
-            return shared::exit("warps", Err(failure));
-        }
-        println!("wrote {}", path.display());
+        write_sheet(path, out)?;
+        shared::to_stdout(writeln!(out, "wrote {}", path.display()))?;
     }
-    costs();
-    ExitCode::SUCCESS
+    costs(out)
 }
 
 /// Prints the cost table: nanoseconds per call of every map and choice.
-fn costs() {
+fn costs(out: &mut dyn Write) -> Result<(), Failure> {
     let mut rng = Pcg32::seed_from_u64(0x0027);
     let inputs: Vec<Vec2> = (0..1 << 22)
         .map(|_| {
@@ -243,47 +248,46 @@ fn costs() {
         Vec3::new(1.2, 0.0, 0.3),
         Vec3::new(0.0, 0.9, 0.0),
     );
-    println!("| map | ns per call |");
-    println!("| --- | ---: |");
-    let row = |name: &str, ns: f64| println!("| {name} | {ns:.1} |");
-    row("concentric_disk", time(&inputs, warp::concentric_disk));
-    row("cosine_hemisphere", time(&inputs, warp::cosine_hemisphere));
+    shared::to_stdout(writeln!(out, "| map | ns per call |\n| --- | ---: |"))?;
+    let mut row = |name: &str, ns: f64| shared::to_stdout(writeln!(out, "| {name} | {ns:.1} |"));
+    row("concentric_disk", time(&inputs, warp::concentric_disk))?;
+    row("cosine_hemisphere", time(&inputs, warp::cosine_hemisphere))?;
     row(
         "uniform_hemisphere",
         time(&inputs, warp::uniform_hemisphere),
-    );
-    row("uniform_sphere", time(&inputs, warp::uniform_sphere));
-    row("uniform_triangle", time(&inputs, warp::uniform_triangle));
+    )?;
+    row("uniform_sphere", time(&inputs, warp::uniform_sphere))?;
+    row("uniform_triangle", time(&inputs, warp::uniform_triangle))?;
     row(
         "uniform_cone",
         time(&inputs, |u| warp::uniform_cone(u, 0.9)),
-    );
+    )?;
     row(
         "uniform_ball (u.x reused as u.z)",
         time(&inputs, |u| warp::uniform_ball(u.extend(u.x))),
-    );
+    )?;
     row(
         "rectangle",
         time(&inputs, |u| warp::rectangle(u, corner, ex, ey)),
-    );
+    )?;
     row(
         "spherical_triangle",
         time(&inputs, |u| {
             warp::spherical_triangle(u, tri[0], tri[1], tri[2], Vec3::ZERO)
         }),
-    );
+    )?;
     row(
         "spherical_triangle_inverse",
         time(&inputs, |u| {
             warp::spherical_triangle_inverse(u.extend(1.0), tri[0], tri[1], tri[2], Vec3::ZERO)
         }),
-    );
+    )?;
     row(
         "spherical_rectangle",
         time(&inputs, |u| {
             warp::spherical_rectangle(u, corner, ex, ey, Vec3::ZERO)
         }),
-    );
+    )?;
     let filters: [(&str, Box<dyn Filter>); 6] = [
         ("BoxFilter::sample", Box::new(BoxFilter::new(0.5).unwrap())),
         (
@@ -308,20 +312,23 @@ fn costs() {
         ),
     ];
     for (name, f) in &filters {
-        row(name, time(&inputs, |u| f.sample(u)));
+        row(name, time(&inputs, |u| f.sample(u)))?;
     }
-    println!();
-    println!("| choice among n | discrete(u, n) | Discrete::sample | AliasTable::sample |");
-    println!("| ---: | ---: | ---: | ---: |");
+    shared::to_stdout(writeln!(
+        out,
+        "\n| choice among n | discrete(u, n) | Discrete::sample | AliasTable::sample |\n| ---: | ---: | ---: | ---: |"
+    ))?;
     for n in [8u32, 1024, 65_536] {
         let weights: Vec<f32> = (0..n).map(|_| rng.random::<f32>() + 0.01).collect();
         let d = Discrete::new(&weights).unwrap();
         let a = AliasTable::new(&weights).unwrap();
-        println!(
+        shared::to_stdout(writeln!(
+            out,
             "| {n} | {:.1} | {:.1} | {:.1} |",
             time(&inputs, |u| warp::discrete(u.x, n)),
             time(&inputs, |u| d.sample(u.x)),
             time(&inputs, |u| a.sample(u.x)),
-        );
+        ))?;
     }
+    Ok(())
 }

@@ -42,3 +42,38 @@ fn help_extra_paths_and_unknown_flags_stop_it() {
         assert!(!message.contains('\n'), "one line: {message:?}");
     }
 }
+
+/// A standard output that the reader has closed (`warps | head -1`).
+struct ClosedPipe;
+
+impl std::io::Write for ClosedPipe {
+    fn write(&mut self, _: &[u8]) -> std::io::Result<usize> {
+        Err(std::io::ErrorKind::BrokenPipe.into())
+    }
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
+#[test]
+fn a_closed_standard_output_stops_it_quietly() {
+    let (Ok(Some(args)), _) = parse(&[]) else {
+        panic!("no arguments must parse");
+    };
+    // Stops at the table's first line, before any timing.
+    let result = tool::run(&args, &mut ClosedPipe);
+    assert_eq!(result, Err(Failure::OutputClosed));
+    let mut stderr = Vec::new();
+    assert_eq!(tool::shared::finish("warps", result, &mut stderr), 0);
+    assert!(stderr.is_empty(), "{}", String::from_utf8_lossy(&stderr));
+    // Any other write error is exit status 1 with one line.
+    let full = tool::shared::to_stdout(Err(std::io::ErrorKind::StorageFull.into()));
+    let mut stderr = Vec::new();
+    assert_eq!(tool::shared::finish("warps", full, &mut stderr), 1);
+    let message = String::from_utf8(stderr).unwrap();
+    assert!(
+        message.starts_with("warps: cannot write to standard output")
+            && message.lines().count() == 1,
+        "{message}"
+    );
+}

@@ -1,7 +1,8 @@
 //! Command-line plumbing shared by the example tools: clap errors as one
 //! line, the exit codes, sampler names and comma-separated lists whose
 //! errors name the offending item, and the one behaviour for output paths
-//! (missing folders are created) and for pages read back (a size limit).
+//! (missing folders are created), for standard output closed early (`tool
+//! | head` stops the tool quietly) and for pages read back (a size limit).
 //!
 //! Include it from a tool with `#[path = "../shared/cli.rs"] mod shared;`
 //! (or `"shared/cli.rs"` from a single-file example). Each tool uses a
@@ -32,6 +33,10 @@ pub enum Failure {
     Input(String),
     /// Reading or writing failed: exit status 1.
     Io(String),
+    /// Standard output was closed before the tool finished (`tool |
+    /// head`): it stops quietly, with exit status 0, as it would have if
+    /// the reader had taken everything.
+    OutputClosed,
 }
 
 impl Failure {
@@ -40,6 +45,7 @@ impl Failure {
         match self {
             Failure::Input(_) => 2,
             Failure::Io(_) => 1,
+            Failure::OutputClosed => 0,
         }
     }
 }
@@ -48,6 +54,7 @@ impl fmt::Display for Failure {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Failure::Input(message) | Failure::Io(message) => f.write_str(message),
+            Failure::OutputClosed => f.write_str("standard output was closed"),
         }
     }
 }
@@ -56,13 +63,23 @@ impl fmt::Display for Failure {
 /// into an exit status (0, 1 or 2).
 pub fn finish(tool: &str, result: Result<(), Failure>, stderr: &mut dyn Write) -> u8 {
     match result {
-        Ok(()) => 0,
+        Ok(()) | Err(Failure::OutputClosed) => 0,
         Err(failure) => {
             // Nothing better to do if standard error itself is gone.
             let _ = writeln!(stderr, "{tool}: {failure}");
             failure.status()
         }
     }
+}
+
+/// A write to standard output as a tool's outcome: a closed pipe is
+/// [`Failure::OutputClosed`] (the tool stops, quietly, with status 0), any
+/// other error [`Failure::Io`] (status 1).
+pub fn to_stdout(result: io::Result<()>) -> Result<(), Failure> {
+    result.map_err(|e| match e.kind() {
+        io::ErrorKind::BrokenPipe => Failure::OutputClosed,
+        _ => Failure::Io(format!("cannot write to standard output: {e}")),
+    })
 }
 
 /// [`finish`] on the real standard error, as the value `main` returns.
