@@ -5,7 +5,8 @@
 //! valgrind --tool=callgrind target/release/examples/draw_cost sobol 2d
 //! ```
 //!
-//! runs `start` and one draw (`1d`, `2d`, `4d`), `start` alone (`none`) or
+//! runs `start` and one draw (`1d`, `2d`, `4d`, every value it returns
+//! summed, so that no coordinate's work is optimised away), `start` alone (`none`) or
 //! the bench's nine-draw path (`path`) for 2^16 scattered pixel samples of
 //! a back end (any `PixelSamplerKind` name, or `unit` for the bench's PCG
 //! unit: one unit, or nine for `path`), through `AnyPixelSampler` when the
@@ -123,13 +124,13 @@ fn run<P: PixelSampler + Copy>(sampler: P, workload: Workload, inputs: &[([u32; 
         let mut d = sampler.start(pixel, index);
         acc += match workload {
             Workload::OneD => d.next_1d(),
-            Workload::TwoD => d.next_2d().x,
-            Workload::FourD => d.next_4d().w,
+            Workload::TwoD => d.next_2d().element_sum(),
+            Workload::FourD => d.next_4d().element_sum(),
             Workload::Path => {
                 let mut s = 0.0;
                 for b in 0..3 {
                     let mut bounce = d.branch(1).branch(b);
-                    s += bounce.next_1d() + bounce.next_1d() + bounce.next_2d().y;
+                    s += bounce.next_1d() + bounce.next_1d() + bounce.next_2d().element_sum();
                 }
                 s
             }

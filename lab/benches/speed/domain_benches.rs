@@ -97,7 +97,8 @@ fn inputs() -> Vec<Input> {
 }
 
 /// The path workload: three bounces of a bounce branch, two 1D draws and
-/// a 2D draw. Returns a value that depends on every draw.
+/// a 2D draw. Returns a value that depends on every value drawn (a
+/// coordinate left unused would let the compiler skip its work).
 #[inline(always)]
 fn path<P: PixelSampler + Copy>(sampler: &P, input: Input) -> f32 {
     let d = sampler.start(input.pixel, input.index);
@@ -106,17 +107,18 @@ fn path<P: PixelSampler + Copy>(sampler: &P, input: Input) -> f32 {
         let mut bounce = d.branch(BOUNCE).branch(b);
         acc += bounce.next_1d();
         acc += bounce.next_1d();
-        acc += bounce.next_2d().y;
+        acc += bounce.next_2d().element_sum();
     }
     acc
 }
 
-/// The unit's cost of the same path: one unit per draw.
+/// The unit's cost of the same path: one unit per draw, both its floats
+/// used.
 #[inline(always)]
 fn unit_path(input: Input) -> f32 {
     let mut acc = 0.0;
     for dimension in 0..3 * BOUNCES {
-        acc += unit(input.pixel, input.index, dimension).x;
+        acc += unit(input.pixel, input.index, dimension).element_sum();
     }
     acc
 }
