@@ -2,7 +2,7 @@
 
 use core::fmt;
 
-use crate::SamplerKind;
+use crate::samplers::SamplerKind;
 
 /// What was wrong with the input to a sampler constructor or a metric.
 ///
@@ -579,10 +579,11 @@ mod tests {
 
     #[test]
     fn samples_per_pixel_suggestions_fit_in_u32() {
-        let Err(error) = crate::ZSobol::new(u32::MAX, [1, 1], 0) else {
-            panic!("accepted u32::MAX samples per pixel");
-        };
-        let message = error.to_string();
+        // What `ZSobol::new(u32::MAX, ..)` returns (tests/pixel/domain.rs).
+        let message = Error::SamplesNotPowerOfTwo {
+            samples_per_pixel: u32::MAX,
+        }
+        .to_string();
         assert!(
             message.ends_with("got 4294967295; use 2147483648"),
             "{message}"

@@ -82,7 +82,7 @@ use core::f64::consts::PI;
 
 use glam::Vec2;
 
-use crate::Error;
+use crate::error::Error;
 
 /// One filter sample: where the sample goes relative to the pixel centre,
 /// and the weight its radiance gets.

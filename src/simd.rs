@@ -229,7 +229,8 @@ fn fill_lanes<K: Kernel, const N: usize>(kernel: &K, start: u32, out: &mut [Vec2
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Sampler2D, SamplerKind};
+    use crate::samplers::SamplerKind;
+    use crate::traits::Sampler2D;
 
     /// Asserts that `fill` wrote exactly `sample`'s bits.
     fn assert_bits(got: &[Vec2], expected: &[Vec2], what: &dyn core::fmt::Display) {

@@ -1691,8 +1691,8 @@ pub fn spherical_rectangle_pdf(corner: Vec3, ex: Vec3, ey: Vec3, p: Vec3) -> f32
 /// and returns their sum in f64 (no overflow: at most 2^32 terms below
 /// 2^128 each).
 #[cfg(feature = "alloc")]
-fn checked_total(weights: &[f32]) -> Result<f64, crate::Error> {
-    use crate::Error;
+fn checked_total(weights: &[f32]) -> Result<f64, crate::error::Error> {
+    use crate::error::Error;
     if weights.len() > u32::MAX as usize {
         return Err(Error::TooManyWeights {
             count: weights.len(),
@@ -1830,7 +1830,7 @@ impl Discrete {
     ///     Err(Error::NonFiniteWeight { index: 1, .. })
     /// ));
     /// ```
-    pub fn new(weights: &[f32]) -> Result<Self, crate::Error> {
+    pub fn new(weights: &[f32]) -> Result<Self, crate::error::Error> {
         let total = checked_total(weights)?;
         let mut cdf = alloc::vec::Vec::with_capacity(weights.len() + 1);
         cdf.push(0.0);
@@ -2006,7 +2006,7 @@ impl AliasTable {
     ///     Err(Error::NegativeWeight { index: 2, weight: -1e-9 })
     /// );
     /// ```
-    pub fn new(weights: &[f32]) -> Result<Self, crate::Error> {
+    pub fn new(weights: &[f32]) -> Result<Self, crate::error::Error> {
         use alloc::vec::Vec;
         let total = checked_total(weights)?;
         let n = weights.len();

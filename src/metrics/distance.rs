@@ -8,7 +8,7 @@ use alloc::vec::Vec;
 use glam::Vec2;
 
 use super::{coord, radix_sort, validate};
-use crate::Error;
+use crate::error::Error;
 use crate::primitives::morton::morton_64;
 
 /// Smallest Euclidean distance between two points of the set (0 when two

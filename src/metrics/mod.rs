@@ -49,7 +49,7 @@ mod stratification;
 
 use glam::Vec2;
 
-use crate::Error;
+use crate::error::Error;
 pub(crate) use sort::{radix_sort, sort_keys_in_place};
 
 pub use discrepancy::{

@@ -8,7 +8,7 @@ use core::f64::consts::PI;
 use glam::Vec2;
 
 use super::{coord, validate};
-use crate::Error;
+use crate::error::Error;
 
 /// The largest `max_frequency` [`radial_power_spectrum`] accepts.
 pub const MAX_SPECTRUM_FREQUENCY: u32 = 1 << 16;

@@ -11,7 +11,7 @@ use alloc::vec::Vec;
 use glam::Vec2;
 
 use super::validate;
-use crate::Error;
+use crate::error::Error;
 
 /// `floor(v * cells)`, exactly, for `v` a finite f32 in `[0, 1)` (`-0.0` is 0).
 #[inline]

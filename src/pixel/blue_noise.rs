@@ -6,7 +6,7 @@
 use glam::{Vec2, Vec3, Vec4};
 
 use super::{Draw, PixelSampler, Root};
-use crate::Error;
+use crate::error::Error;
 use crate::primitives::morton::{morton, morton_add};
 use crate::primitives::{hash_u32, mix64, owen_scramble_reversed, prefix_shuffle, salt};
 use crate::samplers::sequence::digital::{

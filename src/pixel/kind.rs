@@ -7,9 +7,10 @@ use core::str::FromStr;
 use glam::{Vec2, Vec3, Vec4};
 
 use super::{BlueNoise, Draw, Padded, PaddedNd, PixelSampler, Root, ZSobol};
+use crate::error::Error;
 use crate::error::InputText;
 use crate::samplers::same_name;
-use crate::{AnySampler, Error, LatinHypercube, OrthogonalArray, SamplerKind};
+use crate::samplers::{AnySampler, LatinHypercube, OrthogonalArray, SamplerKind};
 
 /// The pixel samplers that are not a padded [`SamplerKind`], in
 /// [`PixelSamplerKind::ALL`]'s order.

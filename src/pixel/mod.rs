@@ -22,7 +22,7 @@ pub use padded::Padded;
 pub use padded_nd::PaddedNd;
 pub use zsobol::ZSobol;
 
-use crate::Error;
+use crate::error::Error;
 use crate::primitives::{mix64, salt};
 use crate::traits::second_stream;
 
@@ -323,7 +323,7 @@ impl Draw {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Pmj02, Sobol};
+    use crate::samplers::{Pmj02, Sobol};
 
     #[test]
     fn padded_pairs_differ_and_repeat() {

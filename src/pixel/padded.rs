@@ -5,7 +5,7 @@ use glam::{Vec2, Vec3, Vec4};
 
 use super::{Draw, PixelSampler, Root};
 use crate::primitives::salt;
-use crate::{DomainSampler, Sampler2D};
+use crate::traits::{DomainSampler, Sampler2D};
 
 /// Any [`DomainSampler`] as a [`PixelSampler`]: every pixel, every draw
 /// and every frame gets its own pattern of the wrapped sampler (hashed
@@ -151,7 +151,7 @@ pub(super) fn packed_root([x, y]: [u32; 2], frame: u32) -> Root {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::SamplerKind;
+    use crate::samplers::SamplerKind;
 
     #[test]
     fn only_an_unbounded_sequence_has_no_count() {

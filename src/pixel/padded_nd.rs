@@ -5,8 +5,8 @@ use glam::{Vec2, Vec3, Vec4};
 
 use super::padded::packed_root;
 use super::{Draw, PixelSampler, Root};
-use crate::SamplerNd;
 use crate::primitives::{child_key, hash_combine, locate_pass, salt};
+use crate::traits::SamplerNd;
 
 /// Any [`SamplerNd`] ([`OrthogonalArray`](crate::OrthogonalArray),
 /// [`LatinHypercube`](crate::LatinHypercube)) as a [`PixelSampler`]: the

@@ -1,7 +1,7 @@
 use glam::{Vec2, Vec3, Vec4};
 
 use super::{Draw, PixelSampler, Root};
-use crate::Error;
+use crate::error::Error;
 use crate::primitives::morton::morton;
 use crate::primitives::{
     child_key, hash_combine, hash_u32, mix64, owen_scramble, prefix_shuffle, salt,

@@ -1,12 +1,14 @@
 use glam::Vec2;
 
+use crate::error::Error;
 use crate::primitives::{
     InvariantDivisor, MAX_STRATA, hash_u32, owen_scramble_reversed, permute, rand_u32, salt,
     u32_to_unit_f32,
 };
+use crate::samplers::SamplerKind;
 use crate::simd::{self, PointKernel, Pointwise};
+use crate::traits::DomainSampler;
 use crate::traits::{Sampler2D, check_fill_len, debug_check_index};
-use crate::{DomainSampler, Error, SamplerKind};
 
 /// The Hammersley set `(i / n, phi_2(i))`, randomised: scrambled.
 ///

@@ -11,8 +11,9 @@ use super::{
     BlueMultiJittered, CorrelatedMultiJittered, Halton, Hammersley, Jittered, MultiJittered,
     NRooks, Pmj02, Random, Regular, Sobol,
 };
+use crate::error::Error;
+use crate::traits::Sampler2D;
 use crate::traits::{DomainSampler, Sequence2D};
-use crate::{Error, Sampler2D};
 
 /// Declares the sampler list once: the kind enum, its names, the dispatching
 /// enum and its `Sampler2D` and `DomainSampler` impls all come from this

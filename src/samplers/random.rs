@@ -1,9 +1,10 @@
 use glam::Vec2;
 
+use crate::error::Error;
 use crate::primitives::{hash_combine, hash_u32, salt, u32_to_unit_f32};
 use crate::simd::{self, PointKernel, Pointwise};
+use crate::traits::DomainSampler;
 use crate::traits::{Sampler2D, check_fill_len, debug_check_index};
-use crate::{DomainSampler, Error};
 
 /// Independent uniform points: the baseline every other sampler must beat.
 ///

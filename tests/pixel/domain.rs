@@ -434,6 +434,14 @@ fn build_errors_are_the_constructors() {
         z.build(12, [8, 8], 0),
         Err(Error::SamplesNotPowerOfTwo { .. })
     ));
+    // The largest count has its suggestion in u32 (src/error.rs's test
+    // of the message).
+    assert_eq!(
+        ZSobol::new(u32::MAX, [1, 1], 0),
+        Err(Error::SamplesNotPowerOfTwo {
+            samples_per_pixel: u32::MAX
+        })
+    );
     assert!(matches!(
         z.build(4, [0, 8], 0),
         Err(Error::ZeroResolution { .. })

@@ -6,7 +6,7 @@ use alloc::vec;
 use glam::Vec2;
 
 use super::{key_value, keys_in_place, sorted_keys};
-use crate::Error;
+use crate::error::Error;
 use crate::metrics::double_double::{Dd, two_sum};
 use crate::metrics::{coord, validate};
 

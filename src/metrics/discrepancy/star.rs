@@ -6,7 +6,7 @@ use alloc::vec::Vec;
 use glam::Vec2;
 
 use super::{key_value, keys_in_place, sorted_keys};
-use crate::Error;
+use crate::error::Error;
 use crate::metrics::{coord, validate};
 
 /// Exact star discrepancy of a 2D point set: the largest difference, over all

@@ -7,7 +7,7 @@ use alloc::vec::Vec;
 use glam::Vec2;
 
 use super::{key_value, keys_in_place, pack_low_halves, packed, set_packed, sorted_keys};
-use crate::Error;
+use crate::error::Error;
 use crate::metrics::double_double::{Dd, two_prod};
 use crate::metrics::{coord, validate};
 
@@ -632,9 +632,17 @@ mod tests {
         let nf = n as f32;
         let g = ((n as f64) * 0.618_033_988_749_895).round() as usize | 1;
         let mut sobol = vec![Vec2::ZERO; n];
-        crate::Sampler2D::fill(&crate::Sobol::new(n as u32).unwrap(), 9, &mut sobol);
+        crate::traits::Sampler2D::fill(
+            &crate::samplers::Sobol::new(n as u32).unwrap(),
+            9,
+            &mut sobol,
+        );
         let mut pmj = vec![Vec2::ZERO; n];
-        crate::Sampler2D::fill(&crate::Pmj02::new(n as u32).unwrap(), 9, &mut pmj);
+        crate::traits::Sampler2D::fill(
+            &crate::samplers::Pmj02::new(n as u32).unwrap(),
+            9,
+            &mut pmj,
+        );
         vec![
             (
                 "random",

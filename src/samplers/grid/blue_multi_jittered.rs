@@ -1,9 +1,10 @@
 use glam::Vec2;
 
 use super::{CellOffset, Grid, GridPattern, Jitter, fill_grid};
+use crate::error::Error;
 use crate::primitives::{InvariantDivisor, MAX_STRATA, Permutation, derived_key, hash_u32, salt};
+use crate::samplers::SamplerKind;
 use crate::traits::{DomainSampler, Sampler2D};
-use crate::{Error, SamplerKind};
 
 mod lattice_search;
 

@@ -1,9 +1,10 @@
 use glam::Vec2;
 
 use super::{Grid, GridPattern, Jitter, SMALL_TABLE, fill_grid, small_table};
+use crate::error::Error;
 use crate::primitives::{MAX_STRATA, Permutation, derived_key, hash_u32, salt};
+use crate::samplers::SamplerKind;
 use crate::traits::{DomainSampler, Sampler2D};
-use crate::{Error, SamplerKind};
 
 /// Correlated multi-jittered sampling (Kensler 2013): multi-jitter in which
 /// every coarse column uses the same shuffle of its fine sub-columns (and every

@@ -1,9 +1,10 @@
 use glam::Vec2;
 
 use super::{CellOffset, Grid, GridPattern, Jitter, fill_grid};
+use crate::error::Error;
 use crate::primitives::{Permutation, hash_u32};
+use crate::samplers::SamplerKind;
 use crate::traits::{DomainSampler, Sampler2D};
-use crate::{Error, SamplerKind};
 
 /// One uniformly random point in each cell of a `columns x rows` grid
 /// (stratified or "jittered" sampling).

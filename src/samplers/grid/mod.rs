@@ -30,10 +30,11 @@ pub use multi_jittered::MultiJittered;
 pub use n_rooks::NRooks;
 pub use regular::Regular;
 
+use crate::error::Error;
 use crate::primitives::{InvariantDivisor, MAX_STRATA, Permutation, derived_key, rand_u32, salt};
+use crate::samplers::SamplerKind;
 use crate::simd::{self, Kernel};
 use crate::traits::{check_fill_len, debug_check_index};
-use crate::{Error, SamplerKind};
 
 /// Entries of the stack tables some `fill` overrides build for per-row or
 /// per-column work (1 KiB of u32 each): enough for the coarse grid of every

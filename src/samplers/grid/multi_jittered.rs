@@ -1,9 +1,10 @@
 use glam::Vec2;
 
 use super::{Grid, GridPattern, Jitter, SMALL_TABLE, fill_grid};
+use crate::error::Error;
 use crate::primitives::{MAX_STRATA, Permutation, hash_u32, salt};
+use crate::samplers::SamplerKind;
 use crate::traits::{DomainSampler, Sampler2D};
-use crate::{Error, SamplerKind};
 
 /// Multi-jittered sampling: jittered on a coarse `columns x rows` grid and
 /// n-rooks on the fine `n x n` grid at the same time.

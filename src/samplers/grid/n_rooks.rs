@@ -1,9 +1,10 @@
 use glam::Vec2;
 
 use super::{CellOffset, Grid, GridPattern, Jitter, fill_grid};
+use crate::error::Error;
 use crate::primitives::{MAX_STRATA, Permutation, derived_key, hash_u32, salt};
+use crate::samplers::SamplerKind;
 use crate::traits::{DomainSampler, Sampler2D};
-use crate::{Error, SamplerKind};
 
 /// N-rooks (Latin hypercube) sampling: one point in every row and every
 /// column of the `n x n` grid, like `n` rooks that cannot take each other.

@@ -2,9 +2,10 @@ use glam::Vec2;
 
 use super::jittered::JitteredPattern;
 use super::{Centre, Grid, GridPattern, fill_grid};
+use crate::error::Error;
 use crate::primitives::hash_u32;
+use crate::samplers::SamplerKind;
 use crate::traits::{DomainSampler, Sampler2D, stratified_1d};
-use crate::{Error, SamplerKind};
 
 /// Cell centres of a `columns x rows` grid: the deterministic baseline that
 /// aliases.

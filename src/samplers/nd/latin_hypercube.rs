@@ -1,5 +1,5 @@
 use super::{check_dimensions, debug_check_dimension, dimension_key, reduce_index};
-use crate::Error;
+use crate::error::Error;
 use crate::primitives::{
     InvariantDivisor, MAX_STRATA, Permutation, derived_key, hash_u32, rand_u32, salt,
 };

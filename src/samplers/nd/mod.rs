@@ -19,7 +19,7 @@ mod orthogonal_array;
 pub use latin_hypercube::LatinHypercube;
 pub use orthogonal_array::{OrthogonalArray, OrthogonalArrayOffset};
 
-use crate::Error;
+use crate::error::Error;
 use crate::primitives::{InvariantDivisor, hash_combine};
 use crate::traits::debug_check_index;
 

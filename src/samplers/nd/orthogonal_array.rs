@@ -1,6 +1,6 @@
 use super::field::{self, Field, prime_power};
 use super::{check_dimensions, dimension_key, reduce_index};
-use crate::Error;
+use crate::error::Error;
 use crate::primitives::{
     InvariantDivisor, MAX_STRATA, Permutation, derived_key, hash_combine, hash_u32, rand_u32, salt,
 };

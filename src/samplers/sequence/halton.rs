@@ -1,13 +1,14 @@
 use glam::Vec2;
 
 use super::{Sobol, fill_run, fill_set, set_size};
+use crate::error::Error;
 use crate::primitives::{
     hash_combine, hash_u32, owen_scramble_reversed, prefix_shuffle, salt, stratum_to_unit_f32,
     u32_to_unit_f32,
 };
 use crate::simd::Kernel;
+use crate::traits::DomainSampler;
 use crate::traits::{Sampler2D, Sequence2D};
-use crate::{DomainSampler, Error};
 
 /// Base-3 digits scrambled per sample: `3^15 = 14_348_907` strata, the most
 /// that fit in the `2^24` f32 strata of `[0, 1)`.

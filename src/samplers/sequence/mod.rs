@@ -23,7 +23,7 @@ pub use sobol_4d::Sobol4D;
 
 use glam::Vec2;
 
-use crate::Error;
+use crate::error::Error;
 use crate::simd::{self, Kernel};
 use crate::traits::{check_fill_from, check_fill_len};
 

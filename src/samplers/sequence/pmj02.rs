@@ -2,10 +2,11 @@ use glam::{Vec2, Vec3, Vec4};
 
 use super::digital::{DigitalSequence, OwenSeeds, bits_to_point, scrambled_bits};
 use super::{Sobol, fill_run, fill_set, set_size};
+use crate::error::Error;
 use crate::primitives::{owen_scramble, prefix_shuffle};
 use crate::simd::Kernel;
+use crate::traits::DomainSampler;
 use crate::traits::{Sampler2D, Sequence2D};
-use crate::{DomainSampler, Error};
 
 /// Progressive multi-jittered (0,2) sequence (pmj02, Christensen, Kensler &
 /// Kilpatrick 2018), generated in O(1) per sample with no tables.

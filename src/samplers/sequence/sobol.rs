@@ -4,10 +4,10 @@ use super::digital::{
     DigitalSequence, OwenSeeds, bits_to_point, scrambled_unit, sobol_4d_point, sobol_point_bits,
 };
 use super::{fill_run, fill_set, set_size};
-use crate::DomainSampler;
-use crate::Error;
+use crate::error::Error;
 use crate::primitives::{owen_scramble, prefix_shuffle};
 use crate::simd::Kernel;
+use crate::traits::DomainSampler;
 use crate::traits::{Sampler2D, Sequence2D};
 
 /// The first two dimensions of the Sobol sequence, Owen-scrambled with

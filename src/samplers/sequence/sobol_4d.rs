@@ -40,9 +40,11 @@
 
 use glam::Vec4;
 
+use crate::error::Error;
 use crate::primitives::{mix64, salt};
+use crate::samplers::Sobol;
 use crate::traits::check_nd_out;
-use crate::{DomainSampler, Error, SamplerNd, Sobol};
+use crate::traits::{DomainSampler, SamplerNd};
 
 /// Degree, coefficient bits `a` and initial `m_1..m_s` of a primitive
 /// polynomial, as Joe & Kuo list them.

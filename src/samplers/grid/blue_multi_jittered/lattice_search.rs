@@ -429,7 +429,7 @@ fn below_diagonal(x: f64, y: f64) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{BlueMultiJittered, SamplerKind};
+    use crate::samplers::{BlueMultiJittered, SamplerKind};
 
     #[test]
     fn candidates_are_coprime_and_near_the_target() {
