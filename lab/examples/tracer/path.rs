@@ -21,16 +21,7 @@ use wellspread::glam::Vec4;
 use wellspread::{AnyPixelSampler, Domain, PixelSampler, PixelSamplerKind, SamplerKind};
 
 use crate::cornell::{Light, PathSamples, SampleSource, render_cornell};
-use crate::render::Image;
-
-/// How a path's film offset and lens point are drawn from its root domain.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum FilmLens {
-    /// One `next_4d`: film `xy`, lens `zw`.
-    Joint,
-    /// Two `next_2d`: the film, then the lens.
-    Pairs,
-}
+use crate::render::{FilmLens, Image};
 
 /// A [`SampleSource`] over a pixel sampler's domains.
 #[derive(Clone, Copy, Debug)]

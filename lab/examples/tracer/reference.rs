@@ -31,7 +31,9 @@ use rayon::prelude::*;
 use wellspread::{AnySampler, Padded, SamplerKind};
 
 use crate::path;
-use crate::render::{Filter, FilterMode, Image, REFERENCE_DIMENSION, box_pixel, render};
+use crate::render::{
+    Filter, FilterMode, Image, REFERENCE_DIMENSION, box_pixel, gauss_legendre, render,
+};
 use crate::scenes::{Built, Checker, Moire, Polygon, Scene, SceneKind};
 
 /// Samples per pixel for Monte Carlo references: 16 times the largest
@@ -155,38 +157,6 @@ fn polygon_exact(polygon: &Polygon, width: u32, height: u32) -> Image {
     }
 }
 
-/// Nodes and weights of `N`-point Gauss-Legendre quadrature on `[-1, 1]`,
-/// by Newton's method on the Legendre polynomial (three-term recurrence)
-/// from the Chebyshev-like first guess `cos(pi (i + 3/4) / (N + 1/2))`.
-pub fn gauss_legendre<const N: usize>() -> ([f64; N], [f64; N]) {
-    let mut nodes = [0.0; N];
-    let mut weights = [0.0; N];
-    let n = N as f64;
-    for i in 0..N {
-        let mut x = (std::f64::consts::PI * (i as f64 + 0.75) / (n + 0.5)).cos();
-        let mut derivative = 0.0;
-        for _ in 0..100 {
-            // P_N(x) and P_{N-1}(x) by (k+1) P_{k+1} = (2k+1) x P_k - k P_{k-1}.
-            let (mut p, mut p_previous) = (1.0, 0.0);
-            for k in 0..N {
-                let k = k as f64;
-                let next = ((2.0 * k + 1.0) * x * p - k * p_previous) / (k + 1.0);
-                p_previous = p;
-                p = next;
-            }
-            derivative = n * (x * p - p_previous) / (x * x - 1.0);
-            let step = p / derivative;
-            x -= step;
-            if step.abs() < 1e-15 {
-                break;
-            }
-        }
-        nodes[i] = x;
-        weights[i] = 2.0 / ((1.0 - x * x) * derivative * derivative);
-    }
-    (nodes, weights)
-}
-
 /// `sum(w f) / sum(w)` for each pixel, by quadrature over the filter's
 /// support clipped to the film (samples never fall outside it, so the
 /// rendered images normalise over the same region).
@@ -302,24 +272,6 @@ fn write_cache(path: &Path, image: &Image) -> io::Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn gauss_legendre_integrates_degree_fifteen_exactly() {
-        let (nodes, weights) = gauss_legendre::<8>();
-        // The integral of x^14 over [-1, 1] is 2/15; odd powers vanish.
-        let even: f64 = nodes
-            .iter()
-            .zip(&weights)
-            .map(|(x, w)| w * x.powi(14))
-            .sum();
-        let odd: f64 = nodes
-            .iter()
-            .zip(&weights)
-            .map(|(x, w)| w * x.powi(15))
-            .sum();
-        assert!((even - 2.0 / 15.0).abs() < 1e-13, "{even}");
-        assert!(odd.abs() < 1e-13, "{odd}");
-    }
 
     #[test]
     fn moire_quadrature_matches_dense_sampling_on_a_smooth_corner() {

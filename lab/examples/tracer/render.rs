@@ -12,7 +12,6 @@ use std::str::FromStr;
 use rayon::prelude::*;
 use wellspread::{AnyPixelSampler, PixelSampler, PixelSamplerKind, SamplerKind};
 
-use crate::path::FilmLens;
 use crate::scenes::{Rgb, Scene, SceneKind};
 
 /// A linear-RGB image, row-major, row 0 at the top.
@@ -218,6 +217,15 @@ impl FromStr for Filter {
     fn from_str(name: &str) -> Result<Self, Self::Err> {
         crate::shared::by_name(&Filter::ALL, name, Filter::name, "filter")
     }
+}
+
+/// How a path's film offset and lens point are drawn from its root domain.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum FilmLens {
+    /// One `next_4d`: film `xy`, lens `zw`.
+    Joint,
+    /// Two `next_2d`: the film, then the lens.
+    Pairs,
 }
 
 /// A sampler as the command line names it: one of the library's pixel
@@ -539,6 +547,38 @@ pub fn importance_mean_pixel<P: PixelSampler>(
     [sum[0], sum[1], sum[2]].map(|s| (s * scale) as f32)
 }
 
+/// Nodes and weights of `N`-point Gauss-Legendre quadrature on `[-1, 1]`,
+/// by Newton's method on the Legendre polynomial (three-term recurrence)
+/// from the Chebyshev-like first guess `cos(pi (i + 3/4) / (N + 1/2))`.
+pub fn gauss_legendre<const N: usize>() -> ([f64; N], [f64; N]) {
+    let mut nodes = [0.0; N];
+    let mut weights = [0.0; N];
+    let n = N as f64;
+    for i in 0..N {
+        let mut x = (std::f64::consts::PI * (i as f64 + 0.75) / (n + 0.5)).cos();
+        let mut derivative = 0.0;
+        for _ in 0..100 {
+            // P_N(x) and P_{N-1}(x) by (k+1) P_{k+1} = (2k+1) x P_k - k P_{k-1}.
+            let (mut p, mut p_previous) = (1.0, 0.0);
+            for k in 0..N {
+                let k = k as f64;
+                let next = ((2.0 * k + 1.0) * x * p - k * p_previous) / (k + 1.0);
+                p_previous = p;
+                p = next;
+            }
+            derivative = n * (x * p - p_previous) / (x * x - 1.0);
+            let step = p / derivative;
+            x -= step;
+            if step.abs() < 1e-15 {
+                break;
+            }
+        }
+        nodes[i] = x;
+        weights[i] = 2.0 / ((1.0 - x * x) * derivative * derivative);
+    }
+    (nodes, weights)
+}
+
 /// The integral of `filter`'s normalised 1D profile centred at `centre`
 /// over `[0, limit]`: 1 when the support is inside.
 fn film_mass(filter: Filter, centre: f64, limit: f64) -> f64 {
@@ -546,7 +586,7 @@ fn film_mass(filter: Filter, centre: f64, limit: f64) -> f64 {
     if centre - r >= 0.0 && centre + r <= limit {
         return 1.0;
     }
-    let (nodes, weights) = crate::reference::gauss_legendre::<8>();
+    let (nodes, weights) = gauss_legendre::<8>();
     filter
         .breaks()
         .windows(2)
@@ -663,6 +703,24 @@ pub(crate) fn pixel_bits(pixels: &[Rgb]) -> Vec<u32> {
 mod tests {
     use super::*;
     use crate::scenes::SceneKind;
+
+    #[test]
+    fn gauss_legendre_integrates_degree_fifteen_exactly() {
+        let (nodes, weights) = gauss_legendre::<8>();
+        // The integral of x^14 over [-1, 1] is 2/15; odd powers vanish.
+        let even: f64 = nodes
+            .iter()
+            .zip(&weights)
+            .map(|(x, w)| w * x.powi(14))
+            .sum();
+        let odd: f64 = nodes
+            .iter()
+            .zip(&weights)
+            .map(|(x, w)| w * x.powi(15))
+            .sum();
+        assert!((even - 2.0 / 15.0).abs() < 1e-13, "{even}");
+        assert!(odd.abs() < 1e-13, "{odd}");
+    }
 
     #[test]
     fn images_are_bit_identical_for_one_and_two_threads() {
