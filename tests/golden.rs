@@ -42,7 +42,8 @@ use std::fmt::Write as _;
 
 use wellspread::glam::Vec2;
 use wellspread::primitives::{
-    hash_combine, hash_u32, pattern_seed, permute, rand_u32, stratum_to_unit_f32, u32_to_unit_f32,
+    hash_combine, hash_u32, pattern_seed, permute, prefix_shuffle, rand_u32, stratum_to_unit_f32,
+    u32_to_unit_f32,
 };
 use wellspread::{
     LatinHypercube, OrthogonalArray, OrthogonalArrayOffset, PixelSampler, PixelSamplerKind,
@@ -459,8 +460,23 @@ fn independent_reference_values_hold() {
     let zsobol = ZSobol::new(16, [64, 48], 0).unwrap();
     let p = zsobol.sample_pixel([5, 9], 0, 0);
     assert_eq!([p.x.to_bits(), p.y.to_bits()], [0x3efd_745e, 0x3f0b_2a4e]);
+    // The transcription computed this value for sample 7 under the
+    // earlier prefix shuffle (three rounds on the block's low bits); the
+    // current one gives its place to sample 5. Only the shuffle changed,
+    // and it is checked on its own below.
     let p = ZSobol::new(8, [1920, 1080], 0xdead_beef)
         .unwrap()
-        .sample_pixel([1000, 700], 7, 3);
+        .sample_pixel([1000, 700], 5, 3);
     assert_eq!([p.x.to_bits(), p.y.to_bits()], [0x3f61_b773, 0x3f1a_2272]);
+    // prefix_shuffle from a Python transcription of its docs.
+    for (index, key, shuffled) in [
+        (0x2, 0x1234_5678, 0x3),
+        (0x5, 0xdead_beef, 0x4),
+        (0xd, 0x9e37_79b9, 0x9),
+        (0x3e8, 0xcafe_f00d, 0x3a6),
+        (0x8000_1234, 0x0bad_5eed, 0xa44b_43e9),
+        (u32::MAX, 0x7, 0x84d8_eaf4),
+    ] {
+        assert_eq!(prefix_shuffle(index, key), shuffled, "{index:#x} {key:#x}");
+    }
 }

@@ -91,12 +91,22 @@ pub fn permute(index: u32, len: u32, pattern: u32) -> u32 {
 /// 1.14x, 1.10x and 1.0x that of two independently shuffled stratified
 /// sets at 4, 16 and 64 samples (`../shared/prototypes/stream_pairing.py`).
 ///
-/// The block's low `k` bits go through two rounds of a keyed bijection of
-/// the `k`-bit domain (add, odd multiply, xorshift by half the width, a
-/// key-gated neighbour step), the rounds of [`permute`]'s long form.
+/// The block's `k` bits below the leading one are moved to the top of the
+/// word, where three rounds of a keyed bijection shuffle them (add the
+/// round key `r`, multiply by the odd `2 r + 1`, xorshift down by half the
+/// width, rounded up) and a key-gated neighbour step `y ^= (y >> 1) & g`
+/// ends. The round keys are `key` rotated right by 0, 16 and 24 bits, the
+/// gate `key` rotated right by 8. With the bits below the block zero, the
+/// add and the multiply take the block's value `t` to
+/// `(t + r') (2 r + 1) + c` modulo `2^k`, where `r'` is the top `k` bits of
+/// `r` and `c` comes from its bits below (so one key serves the add and,
+/// through its low bits, the multiplier); the xorshifts and the gate move
+/// bits only downwards, and a mask clears what reaches below the block
+/// before each further add. Each step is a bijection of the block for
+/// every key and every width up to 31 bits.
 ///
-/// Cost: a leading-zero count and about twenty integer operations with two
-/// multiplies; no table, no loop.
+/// Cost: a leading-zero count and about thirty-five integer operations,
+/// three of them multiplies; no table, no loop.
 ///
 /// ```
 /// use wellspread::primitives::prefix_shuffle;
@@ -109,28 +119,33 @@ pub fn permute(index: u32, len: u32, pattern: u32) -> u32 {
 #[inline(always)]
 #[must_use]
 pub const fn prefix_shuffle(index: u32, key: u32) -> u32 {
-    let zeros = index.leading_zeros();
-    // The block's leading bit (0 for index 0) and the bits below it.
-    let top = ((1u64 << 31) >> zeros) as u32;
-    let mask = top.saturating_sub(1);
-    let half = (32 - zeros) >> 1;
-    let mut x = index & mask;
-    x = shuffle_round(x, key, mask, half);
-    x = shuffle_round(x, key.rotate_left(7), mask, half);
-    x = shuffle_round(x, key.rotate_left(14), mask, half);
-    top | x
+    // The `k` bits below the leading one (none for indices 0 and 1), moved
+    // to the top of the word: in u64, a shift by 32 leaves nothing.
+    let below = (index | 1).leading_zeros();
+    let shift = below + 1;
+    let half = (32 - below) >> 1;
+    let bits = ((index as u64) << shift) as u32;
+    let domain = (u64::MAX << shift) as u32;
+    let mut r = key;
+    let mut y = prefix_round(bits, r, half);
+    r = r.rotate_right(16);
+    y = prefix_round(y & domain, r, half);
+    r = r.rotate_right(8);
+    y = prefix_round(y & domain, r, half);
+    r = r.rotate_right(16);
+    y ^= (y >> 1) & r;
+    // The bits below the domain shift out; the leading one stays.
+    index ^ (((bits ^ y) as u64 >> shift) as u32)
 }
 
-/// One round of [`prefix_shuffle`]'s bijection of the `mask`-bit domain,
-/// keyed by `k`: an add and an odd multiply (low bits up), a xorshift by
-/// `half` and a `k`-gated neighbour step (high bits down). Written out
-/// rather than looped so every rotation is a constant.
+/// One round of [`prefix_shuffle`]'s bijection of the top bits of `y`
+/// (those below them zero on entry), keyed by `r`: add `r`, multiply by
+/// the odd `2 r + 1`, then xorshift the top bits down by `half`.
 #[inline(always)]
-const fn shuffle_round(x: u32, k: u32, mask: u32, half: u32) -> u32 {
-    let mut x = x.wrapping_add(k) & mask;
-    x = x.wrapping_mul(k.rotate_right(11) | 1) & mask;
-    x ^= x >> half;
-    x ^ ((x >> 1) & k.rotate_right(22))
+const fn prefix_round(y: u32, r: u32, half: u32) -> u32 {
+    let odd = r.wrapping_mul(2).wrapping_add(1);
+    let y = y.wrapping_add(r).wrapping_mul(odd);
+    y ^ (y >> half)
 }
 
 /// The key of the permutation for a bare `pattern`: its hash, so that nearby

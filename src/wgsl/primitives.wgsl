@@ -139,17 +139,26 @@ fn ws_shuffle_round(x0: u32, k: u32, mask: u32, half: u32) -> u32 {
     return x ^ ((x >> 1u) & ws_rotr(k, 22u));
 }
 
-// A keyed shuffle inside each dyadic block [2^j, 2^(j+1)).
+// One round of `prefix_shuffle` on the top bits of y: add r, multiply by
+// the odd 2 r + 1, xorshift down by half.
+fn ws_prefix_round(y0: u32, r: u32, half: u32) -> u32 {
+    let y = (y0 + r) * (2u * r + 1u);
+    return y ^ (y >> half);
+}
+
+// A keyed shuffle inside each dyadic block [2^j, 2^(j+1)), on the bits
+// below the leading one moved to the top of the word. WGSL takes shift
+// amounts mod 32, so each shift by 1 to 32 is two shifts.
 fn ws_prefix_shuffle(index: u32, key: u32) -> u32 {
-    let zeros = countLeadingZeros(index);
-    let top = select(0x80000000u >> zeros, 0u, zeros == 32u);
-    let mask = max(top, 1u) - 1u;
-    let half = (32u - zeros) >> 1u;
-    var x = index & mask;
-    x = ws_shuffle_round(x, key, mask, half);
-    x = ws_shuffle_round(x, ws_rotl(key, 7u), mask, half);
-    x = ws_shuffle_round(x, ws_rotl(key, 14u), mask, half);
-    return top | x;
+    let below = countLeadingZeros(index | 1u);
+    let half = (32u - below) >> 1u;
+    let bits = (index << below) << 1u;
+    let domain = (0xffffffffu << below) << 1u;
+    var y = ws_prefix_round(bits, key, half);
+    y = ws_prefix_round(y & domain, ws_rotr(key, 16u), half);
+    y = ws_prefix_round(y & domain, ws_rotr(key, 24u), half);
+    y ^= (y >> 1u) & ws_rotr(key, 8u);
+    return index ^ (((bits ^ y) >> below) >> 1u);
 }
 
 // `derived_key`: a permutation key from a pattern hash and a salt.
