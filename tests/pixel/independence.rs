@@ -98,7 +98,16 @@ fn tallies(kind: PixelSamplerKind, spp: u32) -> [(&'static str, Tally); 4] {
     let mut parent = Tally::default();
     let mut successive = Tally::default();
     let mut split = Tally::default();
-    for frame in 0..FRAMES {
+    // Blue-noise's pixels share one sample order per 16 x 16 square, so
+    // the film holds only four orders a frame: four times the frames keep
+    // its figures as steady as the others' (over 4 frames its worst rows
+    // move by up to 0.03 when the shuffle's keys are relabelled).
+    let frames = if kind == PixelSamplerKind::BlueNoise {
+        4 * FRAMES
+    } else {
+        FRAMES
+    };
+    for frame in 0..frames {
         let sampler = kind.build(spp, [SIDE, SIDE], frame).unwrap();
         for p in 0..SIDE * SIDE {
             let pixel = [p % SIDE, p / SIDE];
