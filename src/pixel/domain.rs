@@ -35,7 +35,7 @@ use crate::primitives::{child_key, salt};
 ///   (`tests/pixel/independence.rs`). A progressive sequence keeps every
 ///   power-of-two prefix a net, which limits how freely two draws can pair
 ///   (about 1.1x the correlation of independent sets at 4 and 16 samples,
-///   1.0x from 64: see [`prefix_shuffle`](crate::primitives::prefix_shuffle)).
+///   1.06x at 64: see [`prefix_shuffle`](crate::primitives::prefix_shuffle)).
 /// - `d.branch(k)` depends only on `d`'s key, pixel state and index, never
 ///   on how many draws `d` made.
 /// - `d.split(key, count, j)` is sample `index * count + j` of the child

@@ -13,9 +13,9 @@
 //! pairing cannot do better than uniform shuffles inside each dyadic block
 //! of indices, which simulate (12,000 trials of Owen-scrambled van der
 //! Corput streams, `../shared/prototypes/stream_pairing.py`) at 1.14x,
-//! 1.10x and 1.056x; the crate measures 1.13x, 1.10x and 1.04x to 1.06x
-//! (`docs/performance.md`), so 1.05x at 64 spp is below the floor and the
-//! bound there is 1.08x.
+//! 1.10x and 1.056x; the crate measures 1.14x to 1.17x, 1.11x to 1.13x
+//! and 1.04x to 1.06x (`docs/quality.md`), so 1.05x at 64 spp is below the
+//! floor and the bound there is 1.08x.
 
 use rand::Rng;
 use rand::seq::SliceRandom;
