@@ -328,7 +328,7 @@ impl PixelColumns for ExplicitColumns {
 ///   the per-pixel variance of `Padded<Sobol>`.
 /// - Blue-noise error across pixels at every prefix on integrands that are
 ///   smooth inside a pixel: `docs/blue_noise.md` measures the blurred RMSE
-///   at 0.27 to 0.53 times `Padded<Sobol>`'s on a per-pixel Gaussian and
+///   at 0.27 to 0.52 times `Padded<Sobol>`'s on a per-pixel Gaussian and
 ///   0.52 to 0.78 times on an image footprint (n = 1 to 16, pairs 0 and 2,
 ///   1D draws and the lens half of the 4D draw).
 /// - A domain's `next_4d` is one point of a 4D Owen-scrambled Sobol set per
