@@ -306,7 +306,7 @@ pub fn main_with<I: IntoIterator<Item = OsString>>(
 }
 
 /// Writes the points to `--out` or `stdout`. A closed pipe (`| head`) is
-/// not an error.
+/// not an error: [`Failure::OutputClosed`], exit status 0, no message.
 pub fn run(options: &Options, stdout: &mut dyn Write) -> Result<(), Failure> {
     let result = match &options.out {
         Some(path) => {
@@ -318,11 +318,7 @@ pub fn run(options: &Options, stdout: &mut dyn Write) -> Result<(), Failure> {
             write_points(options, &mut stdout).and_then(|()| stdout.flush())
         }
     };
-    match result {
-        Err(e) if e.kind() == io::ErrorKind::BrokenPipe => Ok(()),
-        Err(e) => Err(Failure::Io(format!("cannot write the points: {e}"))),
-        Ok(()) => Ok(()),
-    }
+    shared::written(result, "the points")
 }
 
 /// Writes the set in the chosen format.

@@ -72,14 +72,19 @@ pub fn finish(tool: &str, result: Result<(), Failure>, stderr: &mut dyn Write) -
     }
 }
 
-/// A write to standard output as a tool's outcome: a closed pipe is
-/// [`Failure::OutputClosed`] (the tool stops, quietly, with status 0), any
-/// other error [`Failure::Io`] (status 1).
-pub fn to_stdout(result: io::Result<()>) -> Result<(), Failure> {
+/// A write as a tool's outcome: a closed pipe is [`Failure::OutputClosed`]
+/// (the tool stops, quietly, with status 0), any other error
+/// [`Failure::Io`] (status 1), `cannot write {what}: {error}`.
+pub fn written(result: io::Result<()>, what: &str) -> Result<(), Failure> {
     result.map_err(|e| match e.kind() {
         io::ErrorKind::BrokenPipe => Failure::OutputClosed,
-        _ => Failure::Io(format!("cannot write to standard output: {e}")),
+        _ => Failure::Io(format!("cannot write {what}: {e}")),
     })
+}
+
+/// [`written`] for a write to standard output.
+pub fn to_stdout(result: io::Result<()>) -> Result<(), Failure> {
+    written(result, "to standard output")
 }
 
 /// [`finish`] on the real standard error, as the value `main` returns.
