@@ -121,10 +121,12 @@ pub struct Domain<S> {
 
 impl<S: PixelSampler> Domain<S> {
     /// Sample `index` of `pixel` of `sampler`, at draw 0 of the root
-    /// domain; [`PixelSampler::start`] calls this.
+    /// domain, the sampler moved in (any sampler, `Copy` or not;
+    /// [`PixelSampler::start`] makes the same domain from a borrowed `Copy`
+    /// sampler).
     #[inline(always)]
     pub fn start(sampler: S, pixel: [u32; 2], index: u32) -> Self {
-        let root = Self::root(&sampler, pixel, index);
+        let root = Self::located_root(&sampler, pixel, index);
         Self::at_root(sampler, root)
     }
 
@@ -137,14 +139,14 @@ impl<S: PixelSampler> Domain<S> {
     where
         S: Copy,
     {
-        let root = Self::root(sampler, pixel, index);
+        let root = Self::located_root(sampler, pixel, index);
         Self::at_root(*sampler, root)
     }
 
     /// The root's `(key, index, pixel_state)`: the sampler's `root`, then
     /// its `locate`.
     #[inline(always)]
-    fn root(sampler: &S, pixel: [u32; 2], index: u32) -> (u64, u32, u32) {
+    fn located_root(sampler: &S, pixel: [u32; 2], index: u32) -> (u64, u32, u32) {
         let root = sampler.root(pixel);
         let (index, key) = sampler.locate(index, root.key);
         (key, index, root.pixel_state)
