@@ -230,7 +230,7 @@ pub type MitsubaTable = BTreeMap<(u32, String), (u32, f64)>;
 /// Reads the Python script's CSV; a line that is not four fields with a
 /// finite RMSE is an input error naming the line.
 pub fn read_mitsuba(path: &Path) -> Result<MitsubaTable, Failure> {
-    let text = shared::read_page(path)?;
+    let text = shared::read_text(path, "Mitsuba CSV")?;
     let mut table = BTreeMap::new();
     for (number, line) in text.lines().enumerate().skip(1) {
         let fields: Vec<&str> = line.split(',').collect();

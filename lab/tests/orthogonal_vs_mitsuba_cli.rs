@@ -77,3 +77,24 @@ fn the_shipped_csv_reads_and_a_bad_line_is_named() {
     assert!(matches!(tool::read_mitsuba(&missing), Err(Failure::Io(_))));
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn an_oversized_csv_is_named_as_a_mitsuba_csv_not_a_docs_page() {
+    let dir = std::env::temp_dir().join(format!("ovm-big-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let big = dir.join("big.csv");
+    let limit = usize::try_from(tool::shared::MAX_PAGE).unwrap();
+    std::fs::write(&big, vec![b'9'; limit + 1]).unwrap();
+    let result = tool::read_mitsuba(&big);
+    std::fs::remove_dir_all(&dir).unwrap();
+    let Err(failure @ Failure::Input(_)) = result else {
+        panic!("an oversized CSV must be an input error: {result:?}");
+    };
+    let message = failure.to_string();
+    assert!(
+        message.ends_with("big.csv is larger than 4 MiB, the limit for a Mitsuba CSV"),
+        "{message}"
+    );
+    assert!(!message.contains("docs page"), "{message}");
+    assert_eq!(failure.status(), 2);
+}

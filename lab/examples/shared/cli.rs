@@ -303,12 +303,20 @@ pub fn create_file(path: &Path) -> Result<File, Failure> {
 }
 
 /// The largest page a tool reads back to rewrite its generated block
-/// (`--docs`): far more than any page under `docs/`.
+/// (`--docs`), and the largest other text file it reads whole (the Mitsuba
+/// CSV): far more than any page under `docs/`.
 pub const MAX_PAGE: u64 = 4 << 20;
 
-/// The text of the page at `path`, read with a limit of [`MAX_PAGE`] bytes,
-/// so that `--docs /dev/zero` stops with an error instead of filling memory.
+/// The text of the docs page at `path`: [`read_text`] of a `"docs page"`.
 pub fn read_page(path: &Path) -> Result<String, Failure> {
+    read_text(path, "docs page")
+}
+
+/// The text of the file at `path`, read with a limit of [`MAX_PAGE`]
+/// bytes, so that `--docs /dev/zero` stops with an error instead of filling
+/// memory. `what` names the file in that error: `{path} is larger than 4
+/// MiB, the limit for a {what}`.
+pub fn read_text(path: &Path, what: &str) -> Result<String, Failure> {
     let cannot = |e: &dyn fmt::Display| Failure::Io(format!("cannot read {}: {e}", path.display()));
     let file = File::open(path).map_err(|e| cannot(&e))?;
     let mut bytes = Vec::new();
@@ -317,7 +325,7 @@ pub fn read_page(path: &Path) -> Result<String, Failure> {
         .map_err(|e| cannot(&e))?;
     if bytes.len() as u64 > MAX_PAGE {
         return Err(Failure::Input(format!(
-            "{} is larger than {} MiB: not a docs page",
+            "{} is larger than {} MiB, the limit for a {what}",
             path.display(),
             MAX_PAGE >> 20
         )));
