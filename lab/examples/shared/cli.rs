@@ -333,3 +333,48 @@ pub fn read_text(path: &Path, what: &str) -> Result<String, Failure> {
     String::from_utf8(bytes)
         .map_err(|_| Failure::Input(format!("{} is not UTF-8 text", path.display())))
 }
+
+/// Checks, before any work, that `path` can be the page `flag` (`--docs`)
+/// rewrites: a regular file, or nothing yet (it is created). Anything else
+/// that exists is an input error naming what it is, so that a FIFO (whose
+/// opening would block until a reader comes) or a device such as
+/// `/dev/zero` is refused before a render, not after it.
+pub fn check_page_path(flag: &str, path: &Path) -> Result<(), Failure> {
+    let file_type = match fs::metadata(path) {
+        Ok(metadata) => metadata.file_type(),
+        Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(()),
+        Err(e) => {
+            return Err(Failure::Io(format!("cannot read {}: {e}", path.display())));
+        }
+    };
+    if file_type.is_file() {
+        return Ok(());
+    }
+    Err(Failure::Input(format!(
+        "{flag} {}: {}, not a regular file; a page to rewrite must be one",
+        path.display(),
+        file_kind(file_type)
+    )))
+}
+
+/// What a file that is not a regular file is, for messages.
+fn file_kind(file_type: fs::FileType) -> &'static str {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt as _;
+        if file_type.is_fifo() {
+            return "a FIFO";
+        }
+        if file_type.is_char_device() || file_type.is_block_device() {
+            return "a device";
+        }
+        if file_type.is_socket() {
+            return "a socket";
+        }
+    }
+    if file_type.is_dir() {
+        "a directory"
+    } else {
+        "a special file"
+    }
+}

@@ -104,6 +104,9 @@ fn run(options: &Options, stdout: &mut dyn Write) -> Result<(), Failure> {
     let out = &options.out;
     fs::create_dir_all(out)
         .map_err(|e| Failure::Io(format!("cannot create {}: {e}", out.display())))?;
+    if let Some(path) = &options.docs {
+        shared::check_page_path("--docs", path)?;
+    }
     for path in options.report.iter().chain(&options.docs) {
         claim_output(path)?;
     }
@@ -769,24 +772,72 @@ mod tests {
     }
 
     #[test]
-    fn an_endless_docs_page_is_refused_at_the_size_limit() {
-        // `--docs /dev/zero` grew to 4.2 GB: the page is read with a limit.
-        if !cfg!(target_os = "linux") {
-            return;
-        }
+    fn an_oversized_docs_page_is_refused_at_the_size_limit() {
+        // `--docs /dev/zero` grew to 4.2 GB: the page is read with a limit
+        // (a device is now refused before rendering; a regular file past
+        // the limit still reaches it).
         let out = std::env::temp_dir().join(format!("tracer-docs-{}", std::process::id()));
+        fs::create_dir_all(&out).unwrap();
+        let page = out.join("big.md");
+        fs::write(&page, vec![b'x'; shared::MAX_PAGE as usize + 1]).unwrap();
         let mut options = run_options(&["--scene", "polygon", "--spp", "1", "--size", "4"]);
-        options.out = out.clone();
-        options.docs = Some(PathBuf::from("/dev/zero"));
+        options.out = out.join("frames");
+        options.docs = Some(page);
         let failure = run(&options, &mut Vec::new()).unwrap_err();
         let _ = fs::remove_dir_all(&out);
         assert_eq!(failure.status(), 2, "{failure}");
         assert!(
             failure
                 .to_string()
-                .contains("/dev/zero is larger than 4 MiB"),
+                .ends_with("big.md is larger than 4 MiB, the limit for a docs page"),
             "{failure}"
         );
+    }
+
+    #[test]
+    fn a_docs_path_that_is_not_a_regular_file_is_refused_before_rendering() {
+        // `--docs FIFO` blocked forever opening the FIFO; `/dev/zero` and
+        // `/dev/full` were refused only after the render.
+        if !cfg!(target_os = "linux") {
+            return;
+        }
+        let out = std::env::temp_dir().join(format!("tracer-fifo-{}", std::process::id()));
+        fs::create_dir_all(&out).unwrap();
+        let fifo = out.join("page.fifo");
+        let made = std::process::Command::new("mkfifo").arg(&fifo).status();
+        let mut refused = vec![
+            (PathBuf::from("/dev/zero"), "a device"),
+            (PathBuf::from("/dev/full"), "a device"),
+            (out.clone(), "a directory"),
+        ];
+        if made.is_ok_and(|status| status.success()) {
+            refused.push((fifo, "a FIFO"));
+        }
+        for (path, kind) in refused {
+            let mut options = run_options(&["--scene", "polygon", "--spp", "1", "--size", "4"]);
+            options.out = out.join("frames");
+            options.docs = Some(path.clone());
+            let failure = run(&options, &mut Vec::new()).unwrap_err();
+            let message = failure.to_string();
+            assert_eq!(failure.status(), 2, "{message}");
+            assert_eq!(
+                message,
+                format!(
+                    "--docs {}: {kind}, not a regular file; a page to rewrite must be one",
+                    path.display()
+                )
+            );
+            // Nothing was rendered.
+            assert!(!out.join("frames/polygon-4x4-box").exists(), "{message}");
+        }
+        // A page that does not exist yet is made.
+        let mut options = run_options(&["--scene", "polygon", "--spp", "1", "--size", "4"]);
+        options.out = out.join("frames");
+        options.docs = Some(out.join("new/page.md"));
+        run(&options, &mut Vec::new()).unwrap();
+        let page = fs::read_to_string(out.join("new/page.md")).unwrap();
+        let _ = fs::remove_dir_all(&out);
+        assert!(page.contains("polygon"), "{page}");
     }
 
     #[test]
