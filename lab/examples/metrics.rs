@@ -29,7 +29,7 @@ pub struct Args {
     /// Also report `is_stratified` on a grid of M columns and K rows
     #[arg(long, value_name = "MxK", value_parser = parse_grid)]
     pub stratified: Option<(u32, u32)>,
-    /// Values per line: 2 for the 2D metrics (default); 1 or more than 2
+    /// Values per line: 2 for the 2D metrics (default); 1, or 3 to 65536,
     /// for an N-dimensional set, checked projection by projection
     #[arg(long, value_name = "D", default_value = "2", value_parser = parse_dimensions)]
     pub dimensions: usize,
@@ -51,7 +51,9 @@ Input: CSV with one `x,y` point per line, each coordinate in [0, 1) and
 read as f32. Blank lines are ignored, and so are a UTF-8 byte-order mark
 and a first line with no digit and no number in it (a header such as
 `x,y`); any other line that is not two numbers is an error naming its
-line, so a typo such as `O.5,O.5` is never skipped as a header.
+line, so a typo such as `O.5,O.5` is never skipped as a header. A line
+may hold up to 1024 bytes, or 128 bytes per number with --dimensions D
+(so any line `points --dimensions D` writes); a longer line is an error.
 
 Output: one JSON object on one line with the fields `n`,
 `star_discrepancy`, `l2_star_discrepancy`, `centered_l2_discrepancy`,
@@ -162,11 +164,14 @@ pub fn parse_grid(text: &str) -> Result<(u32, u32), String> {
         })
 }
 
-/// `--dimensions`: a whole number from 1.
+/// `--dimensions`: a whole number from 1 to [`MAX_DIMENSIONS`].
 pub fn parse_dimensions(text: &str) -> Result<usize, String> {
-    match shared::whole_number(text)? {
+    match shared::whole_number(text)? as usize {
         0 => Err("a point has at least 1 dimension, got 0".to_owned()),
-        d => Ok(d as usize),
+        d if d > MAX_DIMENSIONS => Err(format!(
+            "at most {MAX_DIMENSIONS} dimensions (the most points writes), got {d}"
+        )),
+        d => Ok(d),
     }
 }
 
@@ -238,10 +243,27 @@ pub enum ReadError {
     Io(io::Error),
 }
 
-/// Bytes of a line kept for parsing: far more than any two f32 numbers
-/// need. A longer line is an error, reported without reading the rest
-/// (an endless line, as from `/dev/zero`, stops here too).
+/// Bytes of a line kept for parsing at the fewest dimensions: far more
+/// than any two f32 numbers need. A longer line is an error, reported
+/// without reading the rest (an endless line, as from `/dev/zero`, stops
+/// here too).
 pub const MAX_LINE: usize = 1024;
+
+/// Bytes a line may spend per number, its comma and spaces included:
+/// twice the longest value `points` writes (the f64 decimal of the smallest
+/// f32 subnormal, 62 characters).
+pub const MAX_FIELD: usize = 128;
+
+/// The most numbers per line: the most dimensions `points` writes
+/// (`LatinHypercube::MAX_DIMENSIONS`), so that the line limit stays at
+/// most 8 MiB.
+pub const MAX_DIMENSIONS: usize = wellspread::LatinHypercube::MAX_DIMENSIONS as usize;
+
+/// The longest line read for `dimensions` numbers: [`MAX_FIELD`] bytes per
+/// number, and never less than [`MAX_LINE`].
+pub fn line_limit(dimensions: usize) -> usize {
+    MAX_LINE.max(MAX_FIELD.saturating_mul(dimensions))
+}
 
 /// Characters of the input an error message quotes at most.
 pub const QUOTE: usize = 80;
@@ -251,7 +273,8 @@ pub const QUOTE: usize = 80;
 /// line and column and quoting at most [`QUOTE`] characters of the input.
 ///
 /// The input is streamed: memory is the points plus one line of at most
-/// [`MAX_LINE`] bytes, whatever the input holds. `size_hint` (the input's
+/// [`MAX_LINE`] bytes ([`line_limit`] for N-dimensional lines), whatever
+/// the input holds. `size_hint` (the input's
 /// size in bytes, 0 if unknown) sizes the point buffer once the first lines
 /// show the typical line length.
 pub fn read_points(reader: &mut dyn BufRead, size_hint: u64) -> Result<Vec<Vec2>, ReadError> {
@@ -268,11 +291,12 @@ pub fn read_records(
     points: &mut dyn Records,
 ) -> Result<(), ReadError> {
     const SAMPLE_LINES: usize = 1024;
+    let limit = line_limit(dimensions);
     let mut line = Vec::with_capacity(MAX_LINE);
     let mut header_allowed = true;
     let mut bytes_read = 0u64;
     for number in 1usize.. {
-        let Some(length) = read_line(reader, &mut line).map_err(ReadError::Io)? else {
+        let Some(length) = read_line(reader, &mut line, limit).map_err(ReadError::Io)? else {
             break;
         };
         bytes_read += length as u64 + 1;
@@ -290,7 +314,7 @@ pub fn read_records(
             Ok(text) => (text, false),
             Err(e) => (
                 std::str::from_utf8(&bytes[..e.valid_up_to()]).unwrap_or(""),
-                // A character cut by the MAX_LINE limit is not an error.
+                // A character cut by the line limit is not an error.
                 e.error_len().is_some() || length == line.len(),
             ),
         };
@@ -303,9 +327,10 @@ pub fn read_records(
         }
         if length > line.len() {
             return Err(ReadError::Input(format!(
-                "line {number}, column {}: a line of more than the {MAX_LINE} bytes \
-                 allowed; expected `x,y` (two numbers), got `{}`",
+                "line {number}, column {}: a line of more than the {limit} bytes \
+                 allowed; expected {}, got `{}`",
                 column(text),
+                numbers(dimensions),
                 quote(text.trim_start())
             )));
         }
@@ -335,12 +360,26 @@ fn expected(dimensions: usize) -> String {
     }
 }
 
-/// Reads one line without its `\n` into `line`, keeping at most
-/// [`MAX_LINE`] bytes of it; returns the line's length, or `None` at the
-/// end of the input. A line longer than [`MAX_LINE`] stops the reading
-/// there: its length is reported as `MAX_LINE + 1` and the rest is left
-/// unread (the caller reports the error and stops).
-fn read_line(reader: &mut dyn BufRead, line: &mut Vec<u8>) -> io::Result<Option<usize>> {
+/// What a line of `dimensions` numbers holds, for messages: `` `x,y` (two
+/// numbers) `` or `80 numbers`.
+fn numbers(dimensions: usize) -> String {
+    if dimensions == 2 {
+        "`x,y` (two numbers)".to_owned()
+    } else {
+        format!("{dimensions} numbers")
+    }
+}
+
+/// Reads one line without its `\n` into `line`, keeping at most `limit`
+/// bytes of it; returns the line's length, or `None` at the end of the
+/// input. A line longer than `limit` stops the reading there: its length
+/// is reported as `limit + 1` and the rest is left unread (the caller
+/// reports the error and stops).
+fn read_line(
+    reader: &mut dyn BufRead,
+    line: &mut Vec<u8>,
+    limit: usize,
+) -> io::Result<Option<usize>> {
     line.clear();
     let (mut length, mut any) = (0usize, false);
     loop {
@@ -355,10 +394,10 @@ fn read_line(reader: &mut dyn BufRead, line: &mut Vec<u8>) -> io::Result<Option<
         any = true;
         let end = chunk.iter().position(|&b| b == b'\n');
         let part = &chunk[..end.unwrap_or(chunk.len())];
-        let room = MAX_LINE - line.len();
+        let room = limit - line.len();
         if part.len() > room {
             line.extend_from_slice(&part[..room]);
-            return Ok(Some(MAX_LINE + 1));
+            return Ok(Some(limit + 1));
         }
         line.extend_from_slice(part);
         length += part.len();
@@ -398,14 +437,15 @@ fn parse_line(
     header_allowed: bool,
     dimensions: usize,
 ) -> Result<Option<Vec<f32>>, ReadError> {
-    // Each field trimmed, with the 1-based column where it starts.
+    // Each field trimmed, with the 1-based column where it starts, counted
+    // field by field (a line of 65,536 numbers is read in linear time).
     let mut fields = Vec::new();
-    let mut start = 0;
+    let mut start_column = 1;
     for raw in line.split(',') {
-        let lead = raw.len() - raw.trim_start().len();
-        let column = line[..start + lead].chars().count() + 1;
-        fields.push((column, raw.trim()));
-        start += raw.len() + 1;
+        let trimmed = raw.trim_start();
+        let lead = raw[..raw.len() - trimmed.len()].chars().count();
+        fields.push((start_column + lead, raw.trim()));
+        start_column += raw.chars().count() + 1;
     }
     if header_allowed
         && !line.bytes().any(|b| b.is_ascii_digit())
@@ -418,13 +458,9 @@ fn parse_line(
             Some(&(column, _)) => column,
             None => line.trim_end().chars().count() + 1,
         };
-        let what = if dimensions == 2 {
-            "`x,y` (two numbers)".to_owned()
-        } else {
-            format!("{dimensions} numbers")
-        };
         return Err(ReadError::Input(format!(
-            "line {number}, column {column}: expected {what}, got {} fields in `{}`",
+            "line {number}, column {column}: expected {}, got {} fields in `{}`",
+            numbers(dimensions),
             fields.len(),
             quote(line.trim())
         )));

@@ -627,3 +627,71 @@ fn n_dimensional_input_errors_name_the_line() {
         assert_eq!(err.lines().count(), 1, "{err:?}");
     }
 }
+
+#[test]
+fn lines_as_long_as_points_writes_are_read_at_every_dimension_count() {
+    // `points --dimensions D | metrics --dimensions D` failed from D = 55,
+    // where the lines pass 1,024 bytes; points writes up to 65,536.
+    for d in ["55", "80", "1000", "65536"] {
+        let csv = points_csv(&[
+            "--sampler",
+            "latin-hypercube",
+            "--n",
+            "4",
+            "--dimensions",
+            d,
+        ]);
+        let longest = csv.split(|&b| b == b'\n').map(<[u8]>::len).max();
+        assert!(longest > Some(tool::MAX_LINE), "{d}: {longest:?}");
+        let json = ok(&["--dimensions", d], &csv);
+        assert_eq!(field(&json, "n"), "4", "{d}");
+        assert_eq!(field(&json, "dimensions"), d);
+        assert_eq!(field(&json, "is_latin"), "true", "{d}");
+    }
+}
+
+#[test]
+fn a_line_past_the_limit_names_the_dimension_count_it_was_given() {
+    // The limit grows with --dimensions, 128 bytes a number; the message
+    // asked for `x,y` whatever the count.
+    assert_eq!(tool::line_limit(2), 1024);
+    assert_eq!(tool::line_limit(80), 10_240);
+    let long = "0.5,".repeat(3000);
+    let (status, out, err) = run(&["--dimensions", "80"], long.as_bytes());
+    assert_eq!((status, out.as_str()), (2, ""), "{err}");
+    assert!(
+        err.starts_with(
+            "metrics: line 1, column 10241: a line of more than the 10240 bytes allowed; \
+             expected 80 numbers, got `0.5,0.5,"
+        ),
+        "{err}"
+    );
+    assert_eq!(err.lines().count(), 1, "{err:?}");
+    // An endless line at the most dimensions stops at its 8 MiB limit.
+    let mut endless = std::io::BufReader::new(std::io::repeat(b'0'));
+    let mut rows = tool::Rows {
+        dimensions: tool::MAX_DIMENSIONS,
+        values: Vec::new(),
+    };
+    let result = tool::read_records(&mut endless, 0, tool::MAX_DIMENSIONS, &mut rows);
+    let Err(tool::ReadError::Input(message)) = result else {
+        panic!("{result:?}");
+    };
+    assert!(
+        message.starts_with(
+            "line 1, column 8388609: a line of more than the 8388608 bytes allowed; \
+             expected 65536 numbers"
+        ),
+        "{message:.200}"
+    );
+    // More dimensions than points writes are refused, and --help says the
+    // limit.
+    let (status, _, err) = run(&["--dimensions", "65537"], b"");
+    assert_eq!(status, 2, "{err}");
+    assert!(
+        err.contains("at most 65536 dimensions (the most points writes), got 65537"),
+        "{err}"
+    );
+    let (_, help, _) = run(&["--help"], b"");
+    assert!(help.contains("128 bytes per number"), "{help}");
+}
