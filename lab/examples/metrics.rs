@@ -153,6 +153,7 @@ pub fn main_with(
 
 /// Parses `M x K` as in `8x8`.
 pub fn parse_grid(text: &str) -> Result<(u32, u32), String> {
+    shared::non_negative(text)?;
     let side = |s: &str| s.trim().parse::<u32>().ok().filter(|&v| v > 0);
     text.split_once(['x', 'X'])
         .and_then(|(m, k)| Some((side(m)?, side(k)?)))

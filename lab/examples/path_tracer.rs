@@ -8,6 +8,7 @@
 
 use std::error::Error;
 use std::f32::consts::PI;
+use std::ffi::OsString;
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -16,21 +17,34 @@ use clap::Parser;
 use wellspread::glam::{Vec2, Vec3};
 use wellspread::{Domain, PixelSampler, PixelSamplerKind, warp};
 
+#[path = "shared/cli.rs"]
+pub mod shared;
+
 /// Renders the scene into a PNG.
 #[derive(Parser, Debug)]
-struct Args {
+pub struct Args {
     /// Pixel sampler: sobol, zsobol, blue-noise, cmj, random, ...
     #[arg(long, default_value = "sobol")]
     sampler: PixelSamplerKind,
     /// Samples per pixel
-    #[arg(long, default_value_t = 16)]
+    #[arg(long, default_value_t = 16, value_parser = shared::whole_number)]
     spp: u32,
     /// The animation frame: each frame gets new patterns
-    #[arg(long, default_value_t = 0)]
+    #[arg(long, default_value_t = 0, value_parser = shared::whole_number)]
     frame: u32,
-    /// The PNG to write (its folder is made if missing)
+    /// The PNG to write (missing folders are created)
     #[arg(long, default_value = "out/path_tracer.png")]
     out: PathBuf,
+}
+
+/// Parses the arguments (without the program name) as every tool does:
+/// `Ok(None)` when the help was written to `out`, a one-line
+/// [`shared::Failure::Input`] for a bad argument.
+pub fn parse(
+    args: impl IntoIterator<Item = OsString>,
+    out: &mut dyn Write,
+) -> Result<Option<Args>, shared::Failure> {
+    shared::parse::<Args>("path_tracer", shared::EXIT_CODES, args, out)
 }
 
 const SIZE: [u32; 2] = [160, 120];
@@ -128,7 +142,11 @@ fn radiance<S: PixelSampler + Copy>(mut root: Domain<S>, pixel: [u32; 2]) -> Vec
 }
 
 fn main() -> ExitCode {
-    let args = Args::parse();
+    let args = match parse(std::env::args_os().skip(1), &mut io::stdout()) {
+        Ok(Some(args)) => args,
+        Ok(None) => return ExitCode::SUCCESS,
+        Err(failure) => return shared::exit("path_tracer", Err(failure)),
+    };
     let (kind, spp) = (args.sampler, args.spp);
     let Ok(sampler) = kind.build(spp, SIZE, args.frame).inspect_err(|e| {
         eprintln!("path_tracer: --sampler {kind} --spp {spp}: {e}");

@@ -695,3 +695,29 @@ fn a_line_past_the_limit_names_the_dimension_count_it_was_given() {
     let (_, help, _) = run(&["--help"], b"");
     assert!(help.contains("128 bytes per number"), "{help}");
 }
+
+#[test]
+fn a_negative_grid_side_is_non_negative_not_an_unknown_flag() {
+    // `--stratified -1x2` read as an unknown flag `-1`, where the other
+    // tools say the value must be non-negative.
+    for (args, expected) in [
+        (&["--stratified", "-1x2"][..], "\"-1x2\""),
+        (&["--stratified", "2x-2"], "\"2x-2\""),
+        (&["--dimensions", "-3"], "\"-3\""),
+    ] {
+        let (status, out, err) = run(args, b"0.5,0.5\n");
+        assert_eq!((status, out.as_str()), (2, ""), "{args:?}: {err}");
+        assert_eq!(
+            err,
+            format!(
+                "metrics: {} <{}>: the value must be non-negative, got {expected} (try --help)\n",
+                args[0],
+                if args[0] == "--stratified" {
+                    "MxK"
+                } else {
+                    "D"
+                }
+            )
+        );
+    }
+}

@@ -121,6 +121,19 @@ fn bad_arguments_are_one_line_errors_with_status_2() {
             "--pattern <P>: the value must be non-negative, got \"-1\"",
         ),
         (
+            &[
+                "--sampler",
+                "latin-hypercube",
+                "--n",
+                "4",
+                "--dimensions",
+                "3",
+                "--projection",
+                "-1,2",
+            ],
+            "--projection <I,J>: the value must be non-negative, got \"-1\"",
+        ),
+        (
             &["--sampler", "jittered", "--n=lots"],
             "\"lots\" is not a whole number",
         ),

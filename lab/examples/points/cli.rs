@@ -23,7 +23,7 @@ pub struct Args {
     #[arg(long, value_name = "NAME", value_parser = sampler_name)]
     pub sampler: SamplerName,
     /// Number of points, from 1 to the sampler's limit
-    #[arg(long, value_name = "N", allow_negative_numbers = true, value_parser = shared::whole_number)]
+    #[arg(long, value_name = "N", value_parser = shared::whole_number)]
     pub n: u32,
     /// Which randomisation, decimal or 0x hex
     #[arg(long, value_name = "P", default_value = "0", value_parser = shared::u32_dec_or_hex)]

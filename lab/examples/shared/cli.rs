@@ -104,15 +104,7 @@ pub fn parse<P: clap::Parser>(
 ) -> Result<Option<P>, Failure> {
     let command = P::command().name(name).bin_name(name);
     let command = command.after_help(after_help.to_owned());
-    // `--pattern -1` reaches the value parser (which says the value must be
-    // non-negative) instead of reading as an unknown flag `-1`.
-    let command = command.mut_args(|arg| {
-        if arg.get_action().takes_values() {
-            arg.allow_negative_numbers(true)
-        } else {
-            arg
-        }
-    });
+    let args = negative_values_attached(&command, args);
     let args = std::iter::once(OsString::from(name)).chain(args);
     match command.try_get_matches_from(args) {
         Ok(mut matches) => P::from_arg_matches_mut(&mut matches)
@@ -129,6 +121,44 @@ pub fn parse<P: clap::Parser>(
             _ => Err(Failure::Input(one_line(&e))),
         },
     }
+}
+
+/// `args` with a value that starts with `-` and a digit (`--pattern -1`,
+/// `--projection -1,2`, `--stratified -1x2`) attached to the long option
+/// before it that takes a value (`--pattern=-1`), so that it reaches the
+/// value parser, which says the value must be non-negative, instead of
+/// reading as an unknown flag `-1`.
+fn negative_values_attached(
+    command: &clap::Command,
+    args: impl IntoIterator<Item = OsString>,
+) -> Vec<OsString> {
+    let takes_value = |flag: &str| {
+        command.get_arguments().any(|arg| {
+            arg.get_action().takes_values()
+                && arg
+                    .get_long_and_visible_aliases()
+                    .is_some_and(|names| names.iter().any(|name| flag == format!("--{name}")))
+        })
+    };
+    let mut joined: Vec<OsString> = Vec::new();
+    for arg in args {
+        let negative = arg.to_str().is_some_and(|text| {
+            let mut chars = text.chars();
+            chars.next() == Some('-') && chars.next().is_some_and(|c| c.is_ascii_digit())
+        });
+        let after_flag = joined
+            .last()
+            .and_then(|last| last.to_str())
+            .is_some_and(takes_value);
+        match joined.last_mut() {
+            Some(last) if negative && after_flag => {
+                last.push("=");
+                last.push(&arg);
+            }
+            _ => joined.push(arg),
+        }
+    }
+    joined
 }
 
 /// A clap error as one line: its first paragraph (the message and, for
@@ -249,21 +279,27 @@ pub fn list<T: PartialEq>(
     Ok(list)
 }
 
-/// The message for a negative number given where counts and patterns go
-/// (clap read `-1` as an unknown flag before [`parse`] allowed it).
-fn negative(text: &str) -> Option<String> {
-    let digits = text.strip_prefix('-')?;
-    digits
-        .parse::<f64>()
-        .is_ok()
-        .then(|| format!("the value must be non-negative, got {}", quoted(text)))
+/// The one message of every tool for a negative number where counts,
+/// sizes and patterns go: `Err` when `text`, or a part of it between `,`
+/// and `x` (`-1,2`, `8x-8`), is a negative number.
+pub fn non_negative(text: &str) -> Result<(), String> {
+    let negative = |part: &str| {
+        part.strip_prefix('-')
+            .is_some_and(|digits| digits.parse::<f64>().is_ok())
+    };
+    if text.split([',', 'x', 'X']).any(negative) {
+        Err(format!(
+            "the value must be non-negative, got {}",
+            quoted(text)
+        ))
+    } else {
+        Ok(())
+    }
 }
 
 /// A `u32` in decimal or `0x` hex, for clap's `value_parser`.
 pub fn u32_dec_or_hex(text: &str) -> Result<u32, String> {
-    if let Some(message) = negative(text) {
-        return Err(message);
-    }
+    non_negative(text)?;
     let parsed = match text.strip_prefix("0x").or_else(|| text.strip_prefix("0X")) {
         Some(hex) => u32::from_str_radix(hex, 16).ok(),
         None => text.parse().ok(),
@@ -280,9 +316,7 @@ pub fn u32_dec_or_hex(text: &str) -> Result<u32, String> {
 /// A decimal `u32`, for clap's `value_parser` (clap's own message for a
 /// bad `u32` does not say the range).
 pub fn whole_number(text: &str) -> Result<u32, String> {
-    if let Some(message) = negative(text) {
-        return Err(message);
-    }
+    non_negative(text)?;
     text.parse().map_err(|_| {
         format!(
             "{} is not a whole number from 0 to {}",

@@ -104,8 +104,7 @@ pub struct Cli {
     frame: u32,
     /// Frames per row, frame..=frame+K-1 (which must not pass
     /// 4294967295); errors are RMS over them [default: 1; 4 for cornell]
-    #[arg(long, alias = "seeds", value_name = "K",
-          value_parser = clap::value_parser!(u32).range(1..=i64::from(MAX_FRAMES)))]
+    #[arg(long, alias = "seeds", value_name = "K", value_parser = parse_frames)]
     frames: Option<u32>,
     /// RMSE the "to reach" columns aim at (positive)
     #[arg(long, value_name = "RMSE", default_value_t = 0.01, value_parser = parse_target)]
@@ -333,6 +332,7 @@ fn parse_light(text: &str) -> Result<Light, String> {
 }
 
 fn parse_count(text: &str, max: u32) -> Result<u32, String> {
+    shared::non_negative(text)?;
     match text.parse::<u32>() {
         Ok(n) if (1..=max).contains(&n) => Ok(n),
         _ => Err(format!("{text:?} is not an integer in 1..={max}")),
@@ -343,8 +343,13 @@ fn parse_spp(text: &str) -> Result<u32, String> {
     parse_count(text, MAX_SPP)
 }
 
+fn parse_frames(text: &str) -> Result<u32, String> {
+    parse_count(text, MAX_FRAMES)
+}
+
 /// `N` or `WxH`. The error quotes the whole value, whichever side is bad.
 fn parse_size(text: &str) -> Result<(u32, u32), String> {
+    shared::non_negative(text)?;
     let (w, h) = text.split_once('x').unwrap_or((text, text));
     let side = |s: &str| s.parse::<u32>().ok().filter(|n| (1..=MAX_SIDE).contains(n));
     match (side(w), side(h)) {
@@ -356,17 +361,11 @@ fn parse_size(text: &str) -> Result<(u32, u32), String> {
 }
 
 fn parse_target(text: &str) -> Result<f64, String> {
+    shared::non_negative(text)?;
     text.parse()
         .ok()
         .filter(|t: &f64| t.is_finite() && *t > 0.0)
-        .ok_or_else(|| {
-            let sign = if text.starts_with('-') {
-                "the value must be non-negative: "
-            } else {
-                ""
-            };
-            format!("{sign}{} is not a positive number", shared::quoted(text))
-        })
+        .ok_or_else(|| format!("{} is not a positive number", shared::quoted(text)))
 }
 #[cfg(test)]
 pub(crate) mod tests {
@@ -480,13 +479,33 @@ pub(crate) mod tests {
             (&["--filter", "sinc"], "sinc"),
             (&["--filter-mode", "splat"], "splat"),
             (&["--frame", "-1"], "must be non-negative"),
+            (
+                &["--spp", "4,-1"],
+                "the value must be non-negative, got \"-1\"",
+            ),
+            (
+                &["--spp", "-1"],
+                "the value must be non-negative, got \"-1\"",
+            ),
+            (
+                &["--size", "-4"],
+                "the value must be non-negative, got \"-4\"",
+            ),
+            (
+                &["--size", "8x-8"],
+                "the value must be non-negative, got \"8x-8\"",
+            ),
+            (
+                &["--frames", "-1"],
+                "the value must be non-negative, got \"-1\"",
+            ),
             (&["--frame", "4294967296"], "4294967296"),
             (&["--frames", "0"], "0"),
             (&["--frames", "1025"], "1025"),
             (&["--target", "0"], "\"0\""),
             (
                 &["--target", "-1"],
-                "must be non-negative: \"-1\" is not a positive number",
+                "--target <RMSE>: the value must be non-negative, got \"-1\"",
             ),
             (&["--spp"], "--spp"),
             (&["--frobnicate"], "--frobnicate"),
