@@ -586,3 +586,14 @@ fn n_dimensional_options_are_checked() {
         assert!(help.contains(needle), "help lacks {needle}");
     }
 }
+
+#[test]
+fn out_help_says_missing_folders_are_created() {
+    // `--out /nonexistent/x.csv` creates the folder: --help says so.
+    let (status, help, err) = tool(&["--help"]);
+    assert_eq!((status, err.as_str()), (0, ""));
+    let (_, after) = help.split_once("--out <FILE>").unwrap();
+    let text = after.split("\n  -").next().unwrap();
+    let text = text.split_whitespace().collect::<Vec<_>>().join(" ");
+    assert!(text.contains("missing folders are created"), "{text}");
+}

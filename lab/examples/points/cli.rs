@@ -44,7 +44,8 @@ pub struct Args {
     /// Output format (see below)
     #[arg(long, value_enum, default_value_t = Format::Csv)]
     pub format: Format,
-    /// Write to FILE instead of standard output
+    /// Write to FILE instead of standard output (missing folders are
+    /// created)
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
 }

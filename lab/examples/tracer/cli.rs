@@ -109,14 +109,16 @@ pub struct Cli {
     /// RMSE the "to reach" columns aim at (positive)
     #[arg(long, value_name = "RMSE", default_value_t = 0.01, value_parser = parse_target)]
     target: f64,
-    /// Output directory
+    /// Output directory (missing folders are created)
     #[arg(long, value_name = "DIR", default_value = "out")]
     out: PathBuf,
-    /// Also write the rows as a JSON array to FILE
+    /// Also write the rows as a JSON array to FILE (missing folders are
+    /// created)
     #[arg(long, value_name = "FILE")]
     report: Option<PathBuf>,
     /// Also write the tables as a markdown page to FILE, headed by the
-    /// command and the machine
+    /// command and the machine (missing folders are created; an existing
+    /// FILE must be a regular file)
     #[arg(long, value_name = "FILE")]
     docs: Option<PathBuf>,
 }
@@ -142,6 +144,9 @@ pub struct Options {
     pub out: PathBuf,
     pub report: Option<PathBuf>,
     pub docs: Option<PathBuf>,
+    /// One-line notes for standard error: the samplers asked for that do
+    /// not apply to a scene of the run, and the scenes left out for it.
+    pub notes: Vec<String>,
 }
 
 /// `items` without repeats, or `all` when `items` is empty.
@@ -199,6 +204,9 @@ impl Options {
             spps
         });
         let scenes = or_all(cli.scenes, all_scenes);
+        let asked_samplers = !cli.samplers.is_empty();
+        let samplers = or_all(cli.samplers, TracerSampler::all());
+        let (scenes, notes) = scenes_with_samplers(scenes, &samplers, asked_samplers)?;
         let lights = or_all(cli.lights, vec![Light::default()]);
         if lights.len() > 1
             && let Some(scene) = scenes.iter().find(|s| !path_traced(s))
@@ -229,7 +237,7 @@ impl Options {
         }
         Ok(Self {
             scenes,
-            samplers: or_all(cli.samplers, TracerSampler::all()),
+            samplers,
             spps,
             size: cli.size,
             filters,
@@ -241,6 +249,7 @@ impl Options {
             out: cli.out,
             report: cli.report,
             docs: cli.docs,
+            notes,
         })
     }
 
@@ -288,6 +297,53 @@ impl Options {
     pub fn frame_range(&self, scene: SceneKind) -> std::ops::RangeInclusive<u32> {
         self.frame..=self.frame + (self.frames_for(scene) - 1)
     }
+}
+
+/// The scenes of `scenes` that some sampler of `samplers` renders, a note
+/// for the scenes left out, and one for each sampler `asked` for by name
+/// that does not apply to a scene kept (`sobol-pairs` renders cornell
+/// only). A run that no sampler applies to is an input error.
+fn scenes_with_samplers(
+    scenes: Vec<SceneKind>,
+    samplers: &[TracerSampler],
+    asked: bool,
+) -> Result<(Vec<SceneKind>, Vec<String>), Failure> {
+    let names = |scenes: &mut dyn Iterator<Item = &SceneKind>| {
+        scenes
+            .map(ToString::to_string)
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let (kept, left_out): (Vec<SceneKind>, Vec<SceneKind>) = scenes
+        .into_iter()
+        .partition(|&scene| samplers.iter().any(|s| s.renders(scene)));
+    let sampler_names: Vec<&str> = samplers.iter().map(|s| s.name()).collect();
+    if kept.is_empty() {
+        return Err(Failure::Input(format!(
+            "no sampler of --sampler {} applies to --scene {}: nothing to render",
+            sampler_names.join(","),
+            names(&mut left_out.iter()).replace(", ", ",")
+        )));
+    }
+    let mut notes = Vec::new();
+    if !left_out.is_empty() {
+        notes.push(format!(
+            "note: no sampler of --sampler {} applies to {}: left out",
+            sampler_names.join(","),
+            names(&mut left_out.iter())
+        ));
+    }
+    for &sampler in samplers.iter().filter(|_| asked) {
+        let skipped = names(&mut kept.iter().filter(|&&s| !sampler.renders(s)));
+        if !skipped.is_empty() {
+            let renders = names(&mut SceneKind::ALL.iter().filter(|&&s| sampler.renders(s)));
+            notes.push(format!(
+                "note: --sampler {sampler} does not apply to {skipped} \
+                 (it renders {renders} only): skipped there"
+            ));
+        }
+    }
+    Ok((kept, notes))
 }
 
 /// Parses the arguments after the program name. `Ok(None)`: `--help` was
@@ -517,6 +573,60 @@ pub(crate) mod tests {
         assert!(message.contains("unknown sampler \"jitterd\""), "{message}");
         for sampler in TracerSampler::all() {
             assert!(message.contains(sampler.name()), "{sampler}: {message}");
+        }
+    }
+
+    #[test]
+    fn a_sampler_that_does_not_apply_to_a_scene_is_a_note_and_none_is_an_error() {
+        // sobol-pairs renders cornell only: it used to be dropped silently.
+        let options = run_options(&["--scene", "moire,cornell", "--sampler", "sobol,sobol-pairs"]);
+        assert_eq!(options.scenes, [SceneKind::Moire, SceneKind::Cornell]);
+        assert_eq!(options.samplers_for(SceneKind::Moire), [SOBOL]);
+        assert_eq!(
+            options.notes,
+            [
+                "note: --sampler sobol-pairs does not apply to moire (it renders cornell only): \
+              skipped there"
+            ]
+        );
+        // A scene no sampler applies to is left out, with a note.
+        let options = run_options(&["--scene", "polygon,cornell", "--sampler", "sobol-pairs"]);
+        assert_eq!(options.scenes, [SceneKind::Cornell]);
+        assert_eq!(
+            options.notes,
+            ["note: no sampler of --sampler sobol-pairs applies to polygon: left out"]
+        );
+        // No sampler at all: exit status 2.
+        let message = usage_error(&["--scene", "moire,checker", "--sampler", "sobol-pairs"]);
+        assert_eq!(
+            message,
+            "no sampler of --sampler sobol-pairs applies to --scene moire,checker: nothing to render"
+        );
+        // Every sampler by default: no notes, even where sobol-pairs is
+        // left out.
+        let options = run_options(&["--scene", "moire"]);
+        assert_eq!(options.notes, Vec::<String>::new());
+        assert!(options.samplers.contains(&TracerSampler::SobolPairs));
+        // A note per fact, each one line.
+        let options = run_options(&["--sampler", "sobol-pairs"]);
+        assert_eq!(options.scenes, [SceneKind::Cornell]);
+        assert_eq!(options.notes.len(), 1, "{:?}", options.notes);
+        assert!(!options.notes[0].contains('\n'), "{:?}", options.notes);
+    }
+
+    #[test]
+    fn every_output_option_says_missing_folders_are_created() {
+        let mut out = Vec::new();
+        parse(args(&["--help"]), &mut out).unwrap();
+        let help = String::from_utf8(out).unwrap();
+        for option in ["--out <DIR>", "--report <FILE>", "--docs <FILE>"] {
+            let (_, after) = help.split_once(option).unwrap();
+            let text = after.split("\n  -").next().unwrap();
+            let text = text.split_whitespace().collect::<Vec<_>>().join(" ");
+            assert!(
+                text.contains("missing folders are created"),
+                "{option}: {text}"
+            );
         }
     }
 

@@ -124,6 +124,9 @@ fn run(options: &Options, stdout: &mut dyn Write) -> Result<(), Failure> {
         * options.filters.len()
         * options.modes.len();
     let progress = Progress::new(frames as u64);
+    for note in &options.notes {
+        progress.note(note);
+    }
     let threads = rayon::current_num_threads();
     let names = |items: Vec<&str>| items.join(",");
     progress.note(&format!(
