@@ -133,11 +133,13 @@ fn negative_values_attached(
     args: impl IntoIterator<Item = OsString>,
 ) -> Vec<OsString> {
     let takes_value = |flag: &str| {
+        let Some(flag) = flag.strip_prefix("--") else {
+            return false;
+        };
         command.get_arguments().any(|arg| {
+            let aliases = arg.get_all_aliases().unwrap_or_default();
             arg.get_action().takes_values()
-                && arg
-                    .get_long_and_visible_aliases()
-                    .is_some_and(|names| names.iter().any(|name| flag == format!("--{name}")))
+                && (arg.get_long() == Some(flag) || aliases.contains(&flag))
         })
     };
     let mut joined: Vec<OsString> = Vec::new();

@@ -555,6 +555,10 @@ pub(crate) mod tests {
                 &["--frames", "-1"],
                 "the value must be non-negative, got \"-1\"",
             ),
+            (
+                &["--seeds", "-1"],
+                "--frames <K>: the value must be non-negative, got \"-1\"",
+            ),
             (&["--frame", "4294967296"], "4294967296"),
             (&["--frames", "0"], "0"),
             (&["--frames", "1025"], "1025"),
