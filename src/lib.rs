@@ -45,7 +45,7 @@
 //! pixel and dimension pair an independent pattern from [`pattern_seed`];
 //! [`ZSobol`] (at its power-of-two count) and [`BlueNoise`] (at every
 //! prefix, any count) spread the error across pixels as blue noise. [`PixelSampler::start`]
-//! makes a [`Domain`], the owned state of one pixel sample that hands out
+//! makes a [`Domain`], the 32-byte state of one pixel sample that hands out
 //! draws of one to four dimensions and keyed child domains
 //! ([`PixelSampler`] shows a path tracer's loop), and [`warp`] maps those
 //! draws onto disks, hemispheres, spheres, triangles, lights (by solid
@@ -154,13 +154,13 @@ pub mod wgsl;
 pub use error::{Error, InputText};
 pub use pixel::{
     AnyPixelSampler, BlueNoise, Domain, Draw, ExplicitColumns, Padded, PaddedNd, PixelColumns,
-    PixelSampler, PixelSamplerKind, Root, SearchedColumns, ZSobol,
+    PixelSampler, PixelSamplerKind, PixelSamplerVisitor, Root, SearchedColumns, ZSobol,
 };
 pub use primitives::pattern_seed;
 pub use samplers::{
     AnySampler, BlueMultiJittered, CorrelatedMultiJittered, Halton, Hammersley, Jittered,
     LatinHypercube, MultiJittered, NRooks, OrthogonalArray, OrthogonalArrayOffset, Pmj02, Random,
-    Regular, SamplerKind, Sobol, Sobol4D,
+    Regular, SamplerKind, SamplerVisitor, Sobol, Sobol4D,
 };
 pub use traits::{DomainSampler, Sampler2D, SamplerNd, Sequence2D, second_stream, stratified_1d};
 

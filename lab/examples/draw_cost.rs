@@ -9,10 +9,13 @@
 //! summed, so that no coordinate's work is optimised away), `start` alone (`none`) or
 //! the bench's nine-draw path (`path`) for 2^16 scattered pixel samples of
 //! a back end (any `PixelSamplerKind` name, or `unit` for the bench's PCG
-//! unit: one unit, or nine for `path`), through `AnyPixelSampler` when the
-//! workload ends in `-any`. Subtract a run of `sobol loop` (the inputs
-//! alone) and divide by 2^16 for the count per pixel sample;
-//! `docs/performance.md` lists them.
+//! unit: one unit, or nine for `path`). The domain borrows the sampler
+//! (`PixelSampler::start`, 32 bytes): the concrete type (through
+//! `AnyPixelSampler::visit`), or `AnyPixelSampler` itself when the
+//! workload ends in `-any`; `-any-owned` runs the owned
+//! `Domain<AnyPixelSampler>` (`Domain::start` by value).
+//! Subtract a run of `sobol loop` (the inputs alone) and divide by 2^16
+//! for the count per pixel sample; `docs/performance.md` lists them.
 
 use std::ffi::OsString;
 use std::hint::black_box;
@@ -20,7 +23,7 @@ use std::io::Write;
 use std::process::ExitCode;
 
 use clap::Parser;
-use wellspread::{AnyPixelSampler, AnySampler, Padded, PixelSampler, PixelSamplerKind};
+use wellspread::{AnyPixelSampler, Domain, PixelSampler, PixelSamplerKind, PixelSamplerVisitor};
 
 #[path = "shared/cli.rs"]
 pub mod shared;
@@ -35,9 +38,21 @@ pub struct Args {
     #[arg(value_name = "SAMPLER", value_parser = back_end)]
     pub back_end: BackEnd,
     /// What each pixel sample does: 1d, 2d, 4d, path, none or loop, with
-    /// `-any` to go through AnyPixelSampler (2d-any)
+    /// `-any` to go through AnyPixelSampler (2d-any), `-any-owned` for the
+    /// owned Domain<AnyPixelSampler>
     #[arg(value_name = "WORKLOAD", value_parser = workload)]
-    pub workload: (Workload, bool),
+    pub workload: (Workload, Through),
+}
+
+/// Which sampler type the domain holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Through {
+    /// A reference to the concrete type.
+    Static,
+    /// `&AnyPixelSampler`, what `start` gives.
+    Any,
+    /// `AnyPixelSampler` by value.
+    AnyOwned,
 }
 
 /// What is measured: a pixel sampler, or the unit.
@@ -73,10 +88,13 @@ fn back_end(text: &str) -> Result<BackEnd, String> {
         .map_err(|e| format!("{e}"))
 }
 
-fn workload(text: &str) -> Result<(Workload, bool), String> {
-    let (name, through_any) = match text.strip_suffix("-any") {
-        Some(name) => (name, true),
-        None => (text, false),
+fn workload(text: &str) -> Result<(Workload, Through), String> {
+    let (name, through) = if let Some(name) = text.strip_suffix("-any-owned") {
+        (name, Through::AnyOwned)
+    } else if let Some(name) = text.strip_suffix("-any") {
+        (name, Through::Any)
+    } else {
+        (text, Through::Static)
     };
     let workload = match name {
         "1d" => Workload::OneD,
@@ -87,12 +105,12 @@ fn workload(text: &str) -> Result<(Workload, bool), String> {
         "loop" => Workload::Loop,
         _ => {
             return Err(format!(
-                "{} is not one of 1d, 2d, 4d, path, none, loop (each may end in -any)",
+                "{} is not one of 1d, 2d, 4d, path, none, loop (each may end in -any or -any-owned)",
                 shared::quoted(text)
             ));
         }
     };
-    Ok((workload, through_any))
+    Ok((workload, through))
 }
 
 /// Parses the arguments (without the program name): `Ok(None)` when the
@@ -121,7 +139,7 @@ fn run<P: PixelSampler + Copy>(sampler: P, workload: Workload, inputs: &[([u32; 
             .sum();
     }
     for &(pixel, index) in inputs {
-        let mut d = sampler.start(pixel, index);
+        let mut d = Domain::start(sampler, pixel, index);
         acc += match workload {
             Workload::OneD => d.next_1d(),
             Workload::TwoD => d.next_2d().element_sum(),
@@ -141,13 +159,26 @@ fn run<P: PixelSampler + Copy>(sampler: P, workload: Workload, inputs: &[([u32; 
     acc
 }
 
+/// `run` on the concrete sampler behind an `AnyPixelSampler`.
+struct Concrete<'a> {
+    workload: Workload,
+    inputs: &'a [([u32; 2], u32)],
+}
+
+impl PixelSamplerVisitor for Concrete<'_> {
+    type Output = f32;
+    fn visit<S: PixelSampler + Copy>(self, sampler: &S) -> f32 {
+        run(sampler, self.workload, self.inputs)
+    }
+}
+
 fn main() -> ExitCode {
     let args = match parse(std::env::args_os().skip(1), &mut std::io::stdout().lock()) {
         Ok(Some(args)) => args,
         Ok(None) => return ExitCode::SUCCESS,
         Err(failure) => return shared::exit("draw_cost", Err(failure)),
     };
-    let ((workload, through_any), back_end) = (args.workload, args.back_end);
+    let ((workload, through), back_end) = (args.workload, args.back_end);
     let mut x = 0x5eed_u32;
     let inputs: Vec<([u32; 2], u32)> = (0..SAMPLES)
         .map(|_| {
@@ -184,34 +215,15 @@ fn main() -> ExitCode {
                     );
                 }
             };
-            if through_any {
+            if through == Through::AnyOwned {
                 run(any, workload, &inputs)
+            } else if through == Through::Any {
+                run::<&AnyPixelSampler>(&any, workload, &inputs)
             } else {
-                // The concrete type of every kind: no wildcard, so a new kind
-                // does not compile until it has its line.
-                match any {
-                    AnyPixelSampler::Padded(p) => match *p.sampler() {
-                        AnySampler::Regular(s) => run(Padded::new(s, 0), workload, &inputs),
-                        AnySampler::Random(s) => run(Padded::new(s, 0), workload, &inputs),
-                        AnySampler::Jittered(s) => run(Padded::new(s, 0), workload, &inputs),
-                        AnySampler::NRooks(s) => run(Padded::new(s, 0), workload, &inputs),
-                        AnySampler::MultiJittered(s) => run(Padded::new(s, 0), workload, &inputs),
-                        AnySampler::CorrelatedMultiJittered(s) => {
-                            run(Padded::new(s, 0), workload, &inputs)
-                        }
-                        AnySampler::BlueMultiJittered(s) => {
-                            run(Padded::new(s, 0), workload, &inputs)
-                        }
-                        AnySampler::Hammersley(s) => run(Padded::new(s, 0), workload, &inputs),
-                        AnySampler::Halton(s) => run(Padded::new(s, 0), workload, &inputs),
-                        AnySampler::Sobol(s) => run(Padded::new(s, 0), workload, &inputs),
-                        AnySampler::Pmj02(s) => run(Padded::new(s, 0), workload, &inputs),
-                    },
-                    AnyPixelSampler::ZSobol(s) => run(s, workload, &inputs),
-                    AnyPixelSampler::BlueNoise(s) => run(s, workload, &inputs),
-                    AnyPixelSampler::Orthogonal(s) => run(s, workload, &inputs),
-                    AnyPixelSampler::LatinHypercube(s) => run(s, workload, &inputs),
-                }
+                any.visit(Concrete {
+                    workload,
+                    inputs: &inputs,
+                })
             }
         }
     };

@@ -91,9 +91,13 @@ fn intersect(origin: Vec3, dir: Vec3) -> Option<(f32, Vec3, Vec3, bool)> {
     .min_by(|a, b| a.0.total_cmp(&b.0))
 }
 
-/// One path of the pixel sample whose root domain is `root`, passed by
-/// value: every random number comes from it or from its children.
-fn radiance<S: PixelSampler + Copy>(mut root: Domain<S>, pixel: [u32; 2]) -> Vec3 {
+/// One path of the pixel sample whose root domain is `root`: every random
+/// number comes from it or from its children. The domain is 32 bytes and
+/// borrows the sampler (`PixelSampler::start`); a routine that draws takes
+/// it by `&mut`. Generic over the sampler (`S: PixelSampler + Copy`, Copy
+/// for `branch` and `split`), so `Domain<&AnyPixelSampler>` and a concrete
+/// `Domain<&Padded<Sobol>>` both fit.
+fn radiance<S: PixelSampler + Copy>(root: &mut Domain<S>, pixel: [u32; 2]) -> Vec3 {
     // Film and lens are one 4D draw: coupled, they stay stratified together.
     let film_lens = root.next_4d();
     let film = (Vec2::new(pixel[0] as f32, pixel[1] as f32) + Vec2::new(film_lens.x, film_lens.y))
@@ -159,7 +163,7 @@ fn main() -> ExitCode {
     for y in 0..SIZE[1] {
         for x in 0..SIZE[0] {
             let sum: Vec3 = (0..args.spp)
-                .map(|i| radiance(sampler.start([x, y], i), [x, y]))
+                .map(|i| radiance(&mut sampler.start([x, y], i), [x, y]))
                 .sum();
             bytes.extend((sum / args.spp as f32).to_array().map(encode));
         }

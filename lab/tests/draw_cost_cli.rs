@@ -8,7 +8,7 @@ mod tool;
 use std::ffi::OsString;
 
 use tool::shared::Failure;
-use tool::{BackEnd, Workload};
+use tool::{BackEnd, Through, Workload};
 use wellspread::{PixelSamplerKind, SamplerKind};
 
 fn parse(args: &[&str]) -> Result<Option<tool::Args>, Failure> {
@@ -22,14 +22,18 @@ fn back_ends_and_workloads_parse() {
     };
     let sobol = PixelSamplerKind::Padded(SamplerKind::Sobol);
     assert_eq!(args.back_end, BackEnd::Sampler(sobol));
-    assert_eq!(args.workload, (Workload::TwoD, true));
+    assert_eq!(args.workload, (Workload::TwoD, Through::Any));
     let Ok(Some(args)) = parse(&["unit", "path"]) else {
         panic!("unit path must parse");
     };
     assert_eq!(
         (args.back_end, args.workload),
-        (BackEnd::Unit, (Workload::Path, false))
+        (BackEnd::Unit, (Workload::Path, Through::Static))
     );
+    let Ok(Some(args)) = parse(&["sobol", "path-any-owned"]) else {
+        panic!("sobol path-any-owned must parse");
+    };
+    assert_eq!(args.workload, (Workload::Path, Through::AnyOwned));
     let Ok(Some(args)) = parse(&["Blue-Noise", "loop"]) else {
         panic!("names parse in any case");
     };

@@ -5,10 +5,18 @@ use glam::{Vec2, Vec3, Vec4};
 use super::{Draw, PixelSampler};
 use crate::primitives::{child_key, salt};
 
-/// One pixel sample's dimensions, owned: the sampler by value, the sample
-/// index, a 64-bit key, a draw counter and the sampler's pixel state
-/// (`Copy + Send + Sync + 'static` when the sampler is). Made by
-/// [`PixelSampler::start`].
+/// One pixel sample's dimensions: the sampler (`S`, a reference or a
+/// value), the sample index, a 64-bit key, a draw counter and the
+/// sampler's pixel state. [`PixelSampler::start`] makes the borrowed form,
+/// `Domain<&S>`, 32 bytes for every sampler: what a renderer passes down
+/// its call tree. [`Domain::start`] by value makes the owned form
+/// (`Copy + Send + Sync + 'static` when the sampler is), for a domain
+/// that must outlive a borrow. Both give the same values.
+///
+/// A routine that draws takes `&mut Domain<&AnyPixelSampler>` (a renderer
+/// that picks its sampler at run time), `&mut Domain<&Padded<Sobol>>` (one
+/// sampler, statically), or is generic: `fn f<S: PixelSampler + Copy>(d:
+/// &mut Domain<S>)` takes every form (`Copy` for `branch` and `split`).
 ///
 /// # Model
 ///
@@ -73,14 +81,20 @@ use crate::primitives::{child_key, salt};
 /// integer operations, no hash). Each draw: one
 /// [`mix64`](crate::primitives::mix64) and the sampler's kernel. `branch`
 /// and `split`: one `mix64` and a multiply-add (`split` also the sampler's
-/// `locate`). `cargo bench -p wellspread-lab --bench speed --
-/// domain-ratio` measures `start` plus draws against a PCG hash making
-/// two floats, per back end (`docs/performance.md`).
+/// `locate`). Through `&AnyPixelSampler` each draw also matches on the
+/// kind and calls the kind's kernel out of line;
+/// [`AnyPixelSampler::visit`](crate::AnyPixelSampler::visit) runs generic
+/// code on the concrete type instead. `cargo bench -p wellspread-lab
+/// --bench speed -- domain-ratio` measures `start` plus draws against a
+/// PCG hash making two floats, per back end, and `lab/draw_cost.sh`
+/// counts their instructions (`docs/performance.md`).
 ///
 /// # Size
 ///
 /// The sampler plus 24 bytes (a u64 key, the index, the draw and
-/// dimension counters and the pixel state); `size_of` is tested per sampler in
+/// dimension counters and the pixel state): 32 bytes borrowed, for every
+/// sampler; owned, 32 bytes for `Padded<Sobol>` up to 120 for
+/// `AnyPixelSampler`. `size_of` is tested per sampler in
 /// `tests/pixel/domain.rs` and listed in `docs/performance.md`.
 ///
 /// # Limits
@@ -121,26 +135,14 @@ pub struct Domain<S> {
 
 impl<S: PixelSampler> Domain<S> {
     /// Sample `index` of `pixel` of `sampler`, at draw 0 of the root
-    /// domain, the sampler moved in (any sampler, `Copy` or not;
-    /// [`PixelSampler::start`] makes the same domain from a borrowed `Copy`
-    /// sampler).
+    /// domain, the sampler moved in: the owned form, `'static` when the
+    /// sampler is, for a domain that outlives any borrow. Pass `&sampler`
+    /// for the borrowed form [`PixelSampler::start`] returns; both give the
+    /// same values.
     #[inline(always)]
     pub fn start(sampler: S, pixel: [u32; 2], index: u32) -> Self {
         let root = Self::located_root(&sampler, pixel, index);
         Self::at_root(sampler, root)
-    }
-
-    /// [`start`](Self::start) from a borrowed sampler, which is copied
-    /// into the domain once, after `root` and `locate` have read the
-    /// original (passing it by value copies a large sampler such as
-    /// `AnyPixelSampler` twice). [`PixelSampler::start`] calls this.
-    #[inline(always)]
-    pub(crate) fn start_from(sampler: &S, pixel: [u32; 2], index: u32) -> Self
-    where
-        S: Copy,
-    {
-        let root = Self::located_root(sampler, pixel, index);
-        Self::at_root(*sampler, root)
     }
 
     /// The root's `(key, index, pixel_state)`: the sampler's `root`, then

@@ -10,7 +10,8 @@ use super::{BlueNoise, Draw, Padded, PaddedNd, PixelSampler, Root, ZSobol};
 use crate::error::Error;
 use crate::error::InputText;
 use crate::samplers::same_name;
-use crate::samplers::{AnySampler, LatinHypercube, OrthogonalArray, SamplerKind};
+use crate::samplers::{AnySampler, LatinHypercube, OrthogonalArray, SamplerKind, SamplerVisitor};
+use crate::traits::DomainSampler;
 
 /// The pixel samplers that are not a padded [`SamplerKind`], in
 /// [`PixelSamplerKind::ALL`]'s order.
@@ -185,11 +186,23 @@ impl FromStr for PixelSamplerKind {
     }
 }
 
-/// Any pixel sampler, chosen at run time: the owned dynamic form (`Copy`,
-/// `'static`, enum dispatch with no allocation), so `Domain<AnyPixelSampler>`
-/// can live in a thread-local or be passed by value. Made by
-/// [`PixelSamplerKind::build`].
+/// Any pixel sampler, chosen at run time (`Copy`, `'static`, enum
+/// dispatch with no allocation). Made by [`PixelSamplerKind::build`].
+///
+/// Three ways to draw from it, with the same values:
+///
+/// - `sampler.start(pixel, index)`: a 32-byte `Domain<&AnyPixelSampler>`
+///   that borrows it, the default. Each draw matches on the kind and calls
+///   that kind's kernel.
+/// - `Domain::start(sampler, pixel, index)`: the owned
+///   `Domain<AnyPixelSampler>` (120 bytes, `'static`), for a thread-local
+///   or a boundary without lifetimes; the same draws.
+/// - [`visit`](Self::visit): code generic over the sampler, run on the
+///   concrete type, with no dispatch per draw (a tile's or a frame's loop).
+///
+/// `docs/performance.md` lists the draws' cost each way.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[repr(u8)]
 pub enum AnyPixelSampler {
     /// A padded [`AnySampler`].
     Padded(Padded<AnySampler>),
@@ -215,6 +228,84 @@ impl AnyPixelSampler {
             AnyPixelSampler::LatinHypercube(_) => PixelSamplerKind::LatinHypercube,
         }
     }
+
+    /// Runs `visitor` on the concrete pixel sampler inside (a padded kind
+    /// as `Padded<Sobol>`, `Padded<Jittered>`, ...): one dispatch, then
+    /// every draw compiled for that type, at its cost. Draws through
+    /// `Domain<&AnyPixelSampler>` dispatch on the kind at each draw instead
+    /// (see [`PixelSamplerVisitor`] for the trade). Same values either way.
+    #[inline]
+    pub fn visit<V: PixelSamplerVisitor>(&self, visitor: V) -> V::Output {
+        match self {
+            AnyPixelSampler::Padded(p) => p.sampler().visit(Padding {
+                frame: p.frame(),
+                visitor,
+            }),
+            AnyPixelSampler::ZSobol(s) => visitor.visit(s),
+            AnyPixelSampler::BlueNoise(s) => visitor.visit(s),
+            AnyPixelSampler::Orthogonal(s) => visitor.visit(s),
+            AnyPixelSampler::LatinHypercube(s) => visitor.visit(s),
+        }
+    }
+}
+
+/// Code generic over the pixel sampler, run by [`AnyPixelSampler::visit`]
+/// on the concrete sampler: the renderer's sampler comes from a flag, and
+/// its loop over a tile or a frame is still compiled for that one type.
+///
+/// # Cost
+///
+/// One `match` per `visit`; inside, each draw costs what the concrete
+/// type's does. A `Domain<&AnyPixelSampler>` instead matches on the kind
+/// at every draw and calls the kind's kernel out of line, which adds about
+/// two PCG-hash units per draw (`docs/performance.md` lists both); the
+/// price of the visitor is code size (the loop is compiled once per kind)
+/// and a generic method where a plain function would do.
+///
+/// ```
+/// use wellspread::{PixelSampler, PixelSamplerKind, PixelSamplerVisitor};
+/// struct Tile<'a> {
+///     out: &'a mut [f32],
+///     spp: u32,
+/// }
+/// impl PixelSamplerVisitor for Tile<'_> {
+///     type Output = ();
+///     fn visit<S: PixelSampler + Copy>(self, sampler: &S) {
+///         for (x, v) in self.out.iter_mut().enumerate() {
+///             for i in 0..self.spp {
+///                 let mut d = sampler.start([x as u32, 0], i); // Domain<&S>
+///                 *v += d.next_2d().x / self.spp as f32;
+///             }
+///         }
+///     }
+/// }
+/// let sampler = "pmj02".parse::<PixelSamplerKind>()?.build(16, [8, 1], 0)?;
+/// let mut row = [0.0f32; 8];
+/// sampler.visit(Tile { out: &mut row, spp: 16 });
+/// // The same values as the dynamic domain's draws.
+/// let x3: f32 = (0..16).map(|i| sampler.start([3, 0], i).next_2d().x / 16.0).sum();
+/// assert_eq!(row[3], x3);
+/// # Ok::<(), wellspread::Error>(())
+/// ```
+pub trait PixelSamplerVisitor {
+    /// What [`visit`](Self::visit) returns.
+    type Output;
+    /// Runs on the concrete pixel sampler.
+    fn visit<S: PixelSampler + Copy>(self, sampler: &S) -> Self::Output;
+}
+
+/// A padded kind's visitor: the concrete sampler, padded with the frame.
+struct Padding<V> {
+    frame: u32,
+    visitor: V,
+}
+
+impl<V: PixelSamplerVisitor> SamplerVisitor for Padding<V> {
+    type Output = V::Output;
+    #[inline]
+    fn visit<S: DomainSampler + Copy + Send + Sync>(self, sampler: &S) -> V::Output {
+        self.visitor.visit(&Padded::new(*sampler, self.frame))
+    }
 }
 
 impl PixelSampler for AnyPixelSampler {
@@ -228,7 +319,7 @@ impl PixelSampler for AnyPixelSampler {
             AnyPixelSampler::LatinHypercube(s) => s.samples_per_pixel(),
         }
     }
-    #[inline]
+    #[inline(always)]
     fn root(&self, pixel: [u32; 2]) -> Root {
         match self {
             AnyPixelSampler::Padded(s) => s.root(pixel),
@@ -238,7 +329,7 @@ impl PixelSampler for AnyPixelSampler {
             AnyPixelSampler::LatinHypercube(s) => s.root(pixel),
         }
     }
-    #[inline]
+    #[inline(always)]
     fn locate(&self, index: u32, key: u64) -> (u32, u64) {
         match self {
             AnyPixelSampler::Padded(s) => s.locate(index, key),
@@ -248,44 +339,62 @@ impl PixelSampler for AnyPixelSampler {
             AnyPixelSampler::LatinHypercube(s) => s.locate(index, key),
         }
     }
-    #[inline]
+    #[inline(always)]
     fn draw_1d(&self, draw: Draw) -> f32 {
         match self {
             AnyPixelSampler::Padded(s) => s.draw_1d(draw),
-            AnyPixelSampler::ZSobol(s) => s.draw_1d(draw),
-            AnyPixelSampler::BlueNoise(s) => s.draw_1d(draw),
-            AnyPixelSampler::Orthogonal(s) => s.draw_1d(draw),
-            AnyPixelSampler::LatinHypercube(s) => s.draw_1d(draw),
+            AnyPixelSampler::ZSobol(s) => kernel_1d(s, draw),
+            AnyPixelSampler::BlueNoise(s) => kernel_1d(s, draw),
+            AnyPixelSampler::Orthogonal(s) => kernel_1d(s, draw),
+            AnyPixelSampler::LatinHypercube(s) => kernel_1d(s, draw),
         }
     }
-    #[inline]
+    #[inline(always)]
     fn draw_2d(&self, draw: Draw) -> Vec2 {
         match self {
             AnyPixelSampler::Padded(s) => s.draw_2d(draw),
-            AnyPixelSampler::ZSobol(s) => s.draw_2d(draw),
-            AnyPixelSampler::BlueNoise(s) => s.draw_2d(draw),
-            AnyPixelSampler::Orthogonal(s) => s.draw_2d(draw),
-            AnyPixelSampler::LatinHypercube(s) => s.draw_2d(draw),
+            AnyPixelSampler::ZSobol(s) => kernel_2d(s, draw),
+            AnyPixelSampler::BlueNoise(s) => kernel_2d(s, draw),
+            AnyPixelSampler::Orthogonal(s) => kernel_2d(s, draw),
+            AnyPixelSampler::LatinHypercube(s) => kernel_2d(s, draw),
         }
     }
-    #[inline]
+    #[inline(always)]
     fn draw_3d(&self, draw: Draw) -> Vec3 {
         match self {
             AnyPixelSampler::Padded(s) => s.draw_3d(draw),
-            AnyPixelSampler::ZSobol(s) => s.draw_3d(draw),
-            AnyPixelSampler::BlueNoise(s) => s.draw_3d(draw),
-            AnyPixelSampler::Orthogonal(s) => s.draw_3d(draw),
-            AnyPixelSampler::LatinHypercube(s) => s.draw_3d(draw),
+            AnyPixelSampler::ZSobol(s) => kernel_3d(s, draw),
+            AnyPixelSampler::BlueNoise(s) => kernel_3d(s, draw),
+            AnyPixelSampler::Orthogonal(s) => kernel_3d(s, draw),
+            AnyPixelSampler::LatinHypercube(s) => kernel_3d(s, draw),
         }
     }
-    #[inline]
+    #[inline(always)]
     fn draw_4d(&self, draw: Draw) -> Vec4 {
         match self {
             AnyPixelSampler::Padded(s) => s.draw_4d(draw),
-            AnyPixelSampler::ZSobol(s) => s.draw_4d(draw),
-            AnyPixelSampler::BlueNoise(s) => s.draw_4d(draw),
-            AnyPixelSampler::Orthogonal(s) => s.draw_4d(draw),
-            AnyPixelSampler::LatinHypercube(s) => s.draw_4d(draw),
+            AnyPixelSampler::ZSobol(s) => kernel_4d(s, draw),
+            AnyPixelSampler::BlueNoise(s) => kernel_4d(s, draw),
+            AnyPixelSampler::Orthogonal(s) => kernel_4d(s, draw),
+            AnyPixelSampler::LatinHypercube(s) => kernel_4d(s, draw),
         }
     }
+}
+
+// The pixel-only kinds' draws, out of line (see `AnySampler`'s kernels).
+#[inline(never)]
+fn kernel_1d<S: PixelSampler>(s: &S, draw: Draw) -> f32 {
+    s.draw_1d(draw)
+}
+#[inline(never)]
+fn kernel_2d<S: PixelSampler>(s: &S, draw: Draw) -> Vec2 {
+    s.draw_2d(draw)
+}
+#[inline(never)]
+fn kernel_3d<S: PixelSampler>(s: &S, draw: Draw) -> Vec3 {
+    s.draw_3d(draw)
+}
+#[inline(never)]
+fn kernel_4d<S: PixelSampler>(s: &S, draw: Draw) -> Vec4 {
+    s.draw_4d(draw)
 }

@@ -1,5 +1,5 @@
 //! Samples addressed the way a renderer asks for them: by pixel, sample
-//! index and draw, through an owned per-sample state, [`Domain`], that
+//! index and draw, through a small per-sample state, [`Domain`], that
 //! hands out draws of one to four dimensions and derives keyed child
 //! domains; [`PixelSampler::sample_pixel`] is a domain's `d`-th 2D draw in
 //! O(1).
@@ -17,7 +17,7 @@ use glam::{Vec2, Vec3, Vec4};
 
 pub use blue_noise::{BlueNoise, ExplicitColumns, PixelColumns, SearchedColumns};
 pub use domain::Domain;
-pub use kind::{AnyPixelSampler, PixelSamplerKind};
+pub use kind::{AnyPixelSampler, PixelSamplerKind, PixelSamplerVisitor};
 pub use padded::Padded;
 pub use padded_nd::PaddedNd;
 pub use zsobol::ZSobol;
@@ -210,23 +210,47 @@ pub trait PixelSampler: Send + Sync {
         ))
     }
 
-    /// The domain of sample `index` of `pixel`: [`root`](Self::root) and
-    /// [`locate`](Self::locate) run here, once; each draw after costs one
-    /// [`mix64`] and the sampler's kernel.
+    /// The domain of sample `index` of `pixel`, borrowing the sampler:
+    /// [`root`](Self::root) and [`locate`](Self::locate) run here, once;
+    /// each draw after costs one [`mix64`] and the sampler's kernel.
+    ///
+    /// The domain is 32 bytes for every sampler (a key, four counters and
+    /// the reference), `Copy`, and lives as long as the borrow: what a
+    /// renderer passes down its call tree, by `&mut` to each routine that
+    /// draws. A domain that must outlive the borrow (a thread-local, a
+    /// `'static` boundary) owns its sampler: [`Domain::start`] by value,
+    /// with the same values (its size is the sampler's plus 24 bytes).
+    ///
+    /// ```
+    /// use wellspread::{AnyPixelSampler, Domain, PixelSampler, PixelSamplerKind};
+    /// // A renderer's routine draws from the domain it is handed.
+    /// fn light_sample(d: &mut Domain<&AnyPixelSampler>) -> f32 {
+    ///     let on_light = d.next_2d();
+    ///     on_light.x * on_light.y
+    /// }
+    /// let sampler = "sobol".parse::<PixelSamplerKind>()?.build(16, [64, 64], 0)?;
+    /// let d = sampler.start([3, 4], 5); // Domain<&AnyPixelSampler>
+    /// assert_eq!(core::mem::size_of_val(&d), 32);
+    /// let light = light_sample(&mut d.branch(7));
+    /// // The owned, 'static form gives the same values.
+    /// let mut owned = Domain::start(sampler, [3, 4], 5).branch(7);
+    /// let p = owned.next_2d();
+    /// assert_eq!(light, p.x * p.y);
+    /// # Ok::<(), wellspread::Error>(())
+    /// ```
     #[inline(always)]
-    fn start(&self, pixel: [u32; 2], index: u32) -> Domain<Self>
+    fn start(&self, pixel: [u32; 2], index: u32) -> Domain<&Self>
     where
-        Self: Sized + Copy,
+        Self: Sized,
     {
-        Domain::start_from(self, pixel, index)
+        Domain::start(self, pixel, index)
     }
 }
 
-/// A pixel sampler behind a reference is one too, so a renderer that holds
-/// `&dyn PixelSampler` gets a `Domain<&dyn PixelSampler>` from
-/// `Domain::start(sampler, pixel, index)` (`Copy`, `Send`
-/// and `Sync`, borrowing the sampler). [`AnyPixelSampler`] is the owned,
-/// `'static` dynamic form.
+/// A pixel sampler behind a reference is one too: the borrowed domain
+/// [`PixelSampler::start`] returns is a `Domain<&S>`, and a renderer that
+/// holds `&dyn PixelSampler` gets a `Domain<&dyn PixelSampler>` (40 bytes)
+/// from `Domain::start(sampler, pixel, index)`.
 impl<T: PixelSampler + ?Sized> PixelSampler for &T {
     #[inline]
     fn samples_per_pixel(&self) -> Option<u32> {

@@ -74,6 +74,7 @@ macro_rules! sampler_kinds {
         /// Any one of wellspread's samplers, chosen at run time, with static
         /// dispatch (a `match`, no allocation).
         #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+        #[repr(u8)]
         pub enum AnySampler {
             $(
                 #[doc = concat!("A [`", stringify!($variant), "`].")]
@@ -87,6 +88,15 @@ macro_rules! sampler_kinds {
             pub const fn kind(&self) -> SamplerKind {
                 match self {
                     $(AnySampler::$variant(_) => SamplerKind::$variant,)*
+                }
+            }
+
+            /// Runs `visitor` on the concrete sampler inside: one `match`,
+            /// then code compiled for that type (see [`SamplerVisitor`]).
+            #[inline]
+            pub fn visit<V: SamplerVisitor>(&self, visitor: V) -> V::Output {
+                match self {
+                    $(AnySampler::$variant(s) => visitor.visit(s),)*
                 }
             }
         }
@@ -129,35 +139,80 @@ macro_rules! sampler_kinds {
                 }
             }
 
-            #[inline]
+            #[inline(always)]
             fn domain_1d(&self, index: u32, stream: u64) -> f32 {
                 match self {
-                    $(AnySampler::$variant(s) => s.domain_1d(index, stream),)*
+                    $(AnySampler::$variant(s) => kernel_1d(s, index, stream),)*
                 }
             }
 
-            #[inline]
+            #[inline(always)]
             fn domain_2d(&self, index: u32, stream: u64) -> Vec2 {
                 match self {
-                    $(AnySampler::$variant(s) => s.domain_2d(index, stream),)*
+                    $(AnySampler::$variant(s) => kernel_2d(s, index, stream),)*
                 }
             }
 
-            #[inline]
+            #[inline(always)]
             fn domain_3d(&self, index: u32, stream: u64) -> Vec3 {
                 match self {
-                    $(AnySampler::$variant(s) => s.domain_3d(index, stream),)*
+                    $(AnySampler::$variant(s) => kernel_3d(s, index, stream),)*
                 }
             }
 
-            #[inline]
+            #[inline(always)]
             fn domain_4d(&self, index: u32, stream: u64) -> Vec4 {
                 match self {
-                    $(AnySampler::$variant(s) => s.domain_4d(index, stream),)*
+                    $(AnySampler::$variant(s) => kernel_4d(s, index, stream),)*
                 }
             }
         }
     };
+}
+
+/// Code generic over the sampler type, run by [`AnySampler::visit`] on the
+/// concrete sampler an `AnySampler` holds: a tool picks the kind at run
+/// time and pays one dispatch per `visit`, not one per sample.
+///
+/// ```
+/// use wellspread::{DomainSampler, SamplerKind, SamplerVisitor};
+/// struct FirstDraw;
+/// impl SamplerVisitor for FirstDraw {
+///     type Output = f32;
+///     fn visit<S: DomainSampler + Copy + Send + Sync>(self, sampler: &S) -> f32 {
+///         sampler.domain_1d(0, 7)
+///     }
+/// }
+/// let sampler = SamplerKind::Sobol.build(16)?;
+/// assert_eq!(sampler.visit(FirstDraw), sampler.domain_1d(0, 7));
+/// # Ok::<(), wellspread::Error>(())
+/// ```
+pub trait SamplerVisitor {
+    /// What [`visit`](Self::visit) returns.
+    type Output;
+    /// Runs on the concrete sampler.
+    fn visit<S: DomainSampler + Copy + Send + Sync>(self, sampler: &S) -> Self::Output;
+}
+
+// The kernels behind `AnySampler`'s draws, one out-of-line copy per kind,
+// with the sampler, index and stream in registers: the dispatch is a jump
+// table whose arms jump to these, not one function holding every kernel
+// (whose register saves and stack frame every draw paid).
+#[inline(never)]
+fn kernel_1d<S: DomainSampler>(s: &S, index: u32, stream: u64) -> f32 {
+    s.domain_1d(index, stream)
+}
+#[inline(never)]
+fn kernel_2d<S: DomainSampler>(s: &S, index: u32, stream: u64) -> Vec2 {
+    s.domain_2d(index, stream)
+}
+#[inline(never)]
+fn kernel_3d<S: DomainSampler>(s: &S, index: u32, stream: u64) -> Vec3 {
+    s.domain_3d(index, stream)
+}
+#[inline(never)]
+fn kernel_4d<S: DomainSampler>(s: &S, index: u32, stream: u64) -> Vec4 {
+    s.domain_4d(index, stream)
 }
 
 sampler_kinds! {

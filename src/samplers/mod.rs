@@ -18,7 +18,7 @@ pub use grid::{
     BlueMultiJittered, CorrelatedMultiJittered, Jittered, MultiJittered, NRooks, Regular,
 };
 pub use hammersley::Hammersley;
-pub use kind::{AnySampler, SamplerKind};
+pub use kind::{AnySampler, SamplerKind, SamplerVisitor};
 pub(crate) use kind::{same_name, write_expected_names};
 pub use nd::{LatinHypercube, OrthogonalArray, OrthogonalArrayOffset};
 pub use random::Random;

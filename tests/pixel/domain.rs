@@ -609,7 +609,7 @@ fn a_new_pixel_sampler_plugs_in_with_three_methods() {
     let mine = Mine(Padded::new(Sobol::new(16).unwrap(), 0));
     let points: Vec<Vec2> = (0..16)
         .map(|i| {
-            let mut d: Domain<Mine> = mine.start([4, 4], i);
+            let mut d: Domain<&Mine> = mine.start([4, 4], i);
             d.next_1d();
             d.branch(5).next_2d()
         })
@@ -738,6 +738,87 @@ fn sample_pixel_is_the_domain_draw_for_every_kind() {
     assert_eq!(d.next_2d(), padded.sample_pixel([3, 4], 5, 1));
 }
 
+/// The borrowed domain `PixelSampler::start` returns is 32 bytes for every
+/// sampler, the enum and a trait object included (a key, four counters, a
+/// reference); the owned form is the sampler plus 24 bytes.
+#[test]
+fn borrowed_domains_are_32_bytes_for_every_kind() {
+    use core::mem::size_of;
+    use wellspread::{
+        AnySampler, BlueMultiJittered, BlueNoise, CorrelatedMultiJittered, Halton, Hammersley,
+        Jittered, LatinHypercube, MultiJittered, NRooks, OrthogonalArray, PaddedNd, Pmj02, Random,
+        Regular,
+    };
+    let borrowed = [
+        size_of::<Domain<&Padded<Regular>>>(),
+        size_of::<Domain<&Padded<Random>>>(),
+        size_of::<Domain<&Padded<Jittered>>>(),
+        size_of::<Domain<&Padded<NRooks>>>(),
+        size_of::<Domain<&Padded<MultiJittered>>>(),
+        size_of::<Domain<&Padded<CorrelatedMultiJittered>>>(),
+        size_of::<Domain<&Padded<BlueMultiJittered>>>(),
+        size_of::<Domain<&Padded<Hammersley>>>(),
+        size_of::<Domain<&Padded<Halton>>>(),
+        size_of::<Domain<&Padded<Sobol>>>(),
+        size_of::<Domain<&Padded<Pmj02>>>(),
+        size_of::<Domain<&Padded<AnySampler>>>(),
+        size_of::<Domain<&ZSobol>>(),
+        size_of::<Domain<&BlueNoise>>(),
+        size_of::<Domain<&PaddedNd<OrthogonalArray>>>(),
+        size_of::<Domain<&PaddedNd<LatinHypercube>>>(),
+        size_of::<Domain<&AnyPixelSampler>>(),
+    ];
+    assert_eq!(borrowed, [32; 17]);
+    // What `start` returns, by type: a reference to the sampler.
+    for (kind, sampler) in every_kind(16, 0) {
+        let d: Domain<&AnyPixelSampler> = sampler.start([1, 2], 3);
+        assert_eq!(size_of_val(&d), 32, "{kind}");
+    }
+    // A trait object's reference is two words.
+    assert_eq!(size_of::<Domain<&dyn PixelSampler>>(), 40);
+}
+
+/// The three ways to draw from an `AnyPixelSampler` give the same values:
+/// the borrowed domain (`start`), the owned one (`Domain::start` by value)
+/// and the concrete type through `visit`, over every kind, every width,
+/// branches and splits.
+#[test]
+fn borrowed_owned_and_visited_domains_agree_for_every_kind() {
+    use wellspread::PixelSamplerVisitor;
+    /// Every width, a branch and a split of one pixel sample, flattened.
+    fn walk<S: PixelSampler + Copy>(mut d: Domain<S>) -> Vec<f32> {
+        let mut out = vec![d.next_1d()];
+        out.extend(d.next_2d().to_array());
+        out.extend(d.next_3d().to_array());
+        out.extend(d.next_4d().to_array());
+        let mut bounce = d.branch(1).branch(2);
+        out.extend(bounce.next_2d().to_array());
+        out.extend(d.split(3, 4, 1).next_4d().to_array());
+        out
+    }
+    struct Walk([u32; 2], u32);
+    impl PixelSamplerVisitor for Walk {
+        type Output = Vec<f32>;
+        fn visit<S: PixelSampler + Copy>(self, sampler: &S) -> Vec<f32> {
+            walk(sampler.start(self.0, self.1))
+        }
+    }
+    for frame in [0, u32::MAX] {
+        for (kind, sampler) in every_kind(16, frame) {
+            for (pixel, index) in [([0, 0], 0), ([5, 9], 3), ([u32::MAX, 7], u32::MAX)] {
+                let borrowed = walk(sampler.start(pixel, index));
+                let owned = walk(Domain::start(sampler, pixel, index));
+                let visited = sampler.visit(Walk(pixel, index));
+                assert_eq!(borrowed, owned, "{kind}, frame {frame}, {pixel:?}, {index}");
+                assert_eq!(
+                    borrowed, visited,
+                    "{kind}, frame {frame}, {pixel:?}, {index}"
+                );
+            }
+        }
+    }
+}
+
 /// `Domain` stays small and cheap to copy: at most 48 bytes for the
 /// sequences, random, Hammersley, ZSobol and BlueNoise. The grid family
 /// carries three 16-byte reciprocals (and blue multi-jitter its lattice),
@@ -808,11 +889,13 @@ fn domain_sizes() {
             size_of::<Domain<PaddedNd<OrthogonalArray>>>(),
             112,
         ),
-        ("AnyPixelSampler", size_of::<Domain<AnyPixelSampler>>(), 112),
+        ("AnyPixelSampler", size_of::<Domain<AnyPixelSampler>>(), 120),
     ];
-    // The default BlueNoise's columns are zero-sized: the enum keeps its size.
-    assert_eq!(size_of::<AnyPixelSampler>(), 88);
-    assert_eq!(size_of::<Domain<AnyPixelSampler>>(), 112);
+    // The default BlueNoise's columns are zero-sized: the enum keeps its
+    // size. Its tags are explicit bytes (`repr(u8)`, a cheaper dispatch
+    // than a niche), 8 bytes more than the largest variant needs alone.
+    assert_eq!(size_of::<AnyPixelSampler>(), 96);
+    assert_eq!(size_of::<Domain<AnyPixelSampler>>(), 120);
     for (name, size, pin) in pinned {
         assert!(
             size <= pin,

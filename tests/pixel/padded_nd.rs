@@ -14,7 +14,7 @@ fn values<S: PixelSampler + Copy>(
     index: u32,
     widths: &[u32],
 ) -> Vec<f32> {
-    let mut d: Domain<S> = sampler.start(pixel, index);
+    let mut d: Domain<S> = Domain::start(sampler, pixel, index);
     draws(&mut d, widths)
 }
 

@@ -45,7 +45,7 @@ impl<P: PixelSampler + Copy> SampleSource for Domains<P> {
 
     #[inline]
     fn start(&self, pixel: [u32; 2], index: u32) -> DomainSamples<P> {
-        let start = self.sampler.start(pixel, index);
+        let start = Domain::start(self.sampler, pixel, index);
         DomainSamples {
             domain: self.root_branch.map_or(start, |key| start.branch(key)),
             film_lens: self.film_lens,
@@ -96,8 +96,9 @@ pub fn render(
     film_lens: FilmLens,
     light: Light,
 ) -> Image {
+    // Borrowed: each path's domain is 32 bytes (owned, 112).
     let source = Domains {
-        sampler,
+        sampler: &sampler,
         film_lens,
         root_branch: None,
     };

@@ -66,9 +66,9 @@ pub const ROULETTE_FROM: u32 = 3;
 /// derives a child that depends only on this domain and `key`, never on
 /// what was drawn before.
 ///
-/// The library's `Domain` fits as is (it is `Copy` and owns its sampler);
-/// with it, `render_cornell(w, h, spp, &Domains(sampler))` renders film
-/// and lens as one 4D point:
+/// The library's `Domain` fits as is (it is `Copy`; with `P =
+/// &AnyPixelSampler` it borrows the sampler); with it, `render_cornell(w,
+/// h, spp, &Domains(&sampler))` renders film and lens as one 4D point:
 ///
 /// ```ignore
 /// pub struct Domains<P>(pub P);
@@ -76,7 +76,7 @@ pub const ROULETTE_FROM: u32 = 3;
 /// impl<P: PixelSampler + Copy> SampleSource for Domains<P> {
 ///     type Samples = wellspread::Domain<P>;
 ///     fn start(&self, pixel: [u32; 2], index: u32) -> wellspread::Domain<P> {
-///         self.0.start(pixel, index)
+///         wellspread::Domain::start(self.0, pixel, index)
 ///     }
 /// }
 ///

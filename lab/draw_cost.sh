@@ -1,0 +1,37 @@
+#!/bin/sh
+# Instructions per pixel sample of every pixel sampler's draws, under
+# callgrind (stable where wall time is not), as the Markdown table of
+# docs/performance.md:
+#
+#     lab/draw_cost.sh > target/draw-cost.md
+#
+# Runs lab/examples/draw_cost.rs for each kind and workload: 2^16 scattered
+# pixel samples, the inputs' loop (`sobol loop`) subtracted. "static" is
+# the concrete type (through AnyPixelSampler::visit), "any" the borrowed
+# Domain<&AnyPixelSampler>, "owned" the owned Domain<AnyPixelSampler>.
+set -eu
+cd "$(dirname "$0")/.."
+command -v valgrind >/dev/null || { echo "draw_cost.sh: needs valgrind" >&2; exit 2; }
+cargo build --quiet --release -p wellspread-lab --example draw_cost
+bin="${CARGO_TARGET_DIR:-target}/release/examples/draw_cost"
+count() {
+    valgrind --tool=callgrind --callgrind-out-file=/dev/null "$bin" "$@" 2>&1 |
+        sed -n 's/.*Collected : \([0-9]*\).*/\1/p'
+}
+loop=$(count sobol loop)
+per() { echo $(( ($(count "$1" "$2") - loop) / 65536 )); }
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2fx", a / b }'; }
+unit2=$(per unit 2d)
+unit9=$(per unit path)
+echo "Unit: $unit2 instructions for start+next_2d's PCG hash, $unit9 for the nine-unit path."
+echo
+echo "| back end | start+next_2d: static / any / owned | any / static | start+next_4d | 9-draw path: static / any / owned | any / static | start: static / any |"
+echo "|---|---|---|---|---|---|---|"
+for kind in regular random jittered n-rooks multi-jittered cmj blue-multi-jittered \
+    hammersley halton sobol pmj02 zsobol blue-noise orthogonal latin-hypercube; do
+    s2=$(per $kind 2d); a2=$(per $kind 2d-any); o2=$(per $kind 2d-any-owned)
+    s4=$(per $kind 4d)
+    sp=$(per $kind path); ap=$(per $kind path-any); op=$(per $kind path-any-owned)
+    sn=$(per $kind none); an=$(per $kind none-any)
+    echo "| $kind | $s2 / $a2 / $o2 | $(ratio $a2 $s2) | $s4 | $sp / $ap / $op | $(ratio $ap $sp) | $sn / $an |"
+done
