@@ -93,6 +93,17 @@ pub enum Error {
         /// The smallest valid count above `n`, if any.
         above: Option<u32>,
     },
+    /// The `orthogonal` pixel sampler was asked for a count that is not
+    /// `lambda q^2` for a prime power `q` (`lambda` passes of a `q^2`
+    /// array): every count with a factor 4, 9, 25, 49, ... is one.
+    NotOrthogonalPixelCount {
+        /// Samples per pixel asked for.
+        samples_per_pixel: u32,
+        /// The largest valid count below, if any.
+        below: Option<u32>,
+        /// The smallest valid count above, if any.
+        above: Option<u32>,
+    },
     /// A metric was given no points.
     EmptyPointSet,
     /// A metric was given a point with a NaN or infinite coordinate.
@@ -372,6 +383,23 @@ impl fmt::Display for Error {
                 "an orthogonal array has strength 2, 3 or 4, got {strength}; strength 1 is a \
                  Latin hypercube (LatinHypercube)"
             ),
+            Error::NotOrthogonalPixelCount {
+                samples_per_pixel,
+                below,
+                above,
+            } => {
+                write!(
+                    f,
+                    "orthogonal takes lambda q^2 samples per pixel (lambda passes of a q^2 \
+                     array, q a prime power: any multiple of 4, 9, 25, 49, ...), and \
+                     {samples_per_pixel} is not one; use "
+                )?;
+                match (below, above) {
+                    (Some(below), Some(above)) => write!(f, "{below} or {above}"),
+                    (Some(only), None) | (None, Some(only)) => write!(f, "{only}"),
+                    (None, None) => f.write_str("another count"),
+                }
+            }
             Error::NotOrthogonalArraySize {
                 n,
                 strength,

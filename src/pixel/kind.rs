@@ -68,7 +68,19 @@ pub enum PixelSamplerKind {
     /// [`BlueNoise`].
     BlueNoise,
     /// [`PaddedNd`] over an [`OrthogonalArray`] of strength 2 with its
-    /// most dimensions (`q + 1` for `q^2` samples per pixel).
+    /// most dimensions, for any count `n = lambda q^2` with `q` a prime
+    /// power (8, 12, 18, 32, 50, 128, ... besides the squares): `q` is the
+    /// largest that fits, and the pixel's `n` samples are `lambda` passes
+    /// of the `q^2` array (indices `p q^2 .. (p + 1) q^2` are pass `p`,
+    /// keyed independently). Each pass is a full array: every page of
+    /// `q + 1` dimensions has every pair of them fill the `q x q` grid,
+    /// every dimension Latin over the pass's `q^2` samples; over all `n`
+    /// samples each dimension has `lambda` samples in each of those `q^2`
+    /// strata. So 8 spp is two 4-sample arrays (`q = 2`, 3 dimensions a
+    /// page), 32 spp two of 16 (`q = 4`), 128 two of 64 (`q = 8`). Counts
+    /// with no such form (1, 2, 3, 5, 6, 7, 10, ...) are an error naming
+    /// the nearest valid ones: one sample has no pairs to stratify, and
+    /// `q = 1` would be a random point per dimension.
     Orthogonal,
     /// [`PaddedNd`] over a [`LatinHypercube`] of
     /// [`MAX_DIMENSIONS`](LatinHypercube::MAX_DIMENSIONS).
@@ -122,8 +134,9 @@ impl PixelSamplerKind {
     /// What the sampler's constructor rejects: `samples_per_pixel = 0` for
     /// all, a count that is not a power of two, a zero side or too large an
     /// index space for ZSobol (see [`ZSobol::new`]), a count that is not
-    /// the square of a prime power for `Orthogonal` (the error names the
-    /// nearest valid counts; see [`OrthogonalArray::new`]).
+    /// `lambda q^2` for a prime power `q` for `Orthogonal`
+    /// ([`Error::NotOrthogonalPixelCount`], which names the nearest valid
+    /// counts).
     pub fn build(
         self,
         samples_per_pixel: u32,
@@ -141,11 +154,21 @@ impl PixelSamplerKind {
                 AnyPixelSampler::BlueNoise(BlueNoise::new(samples_per_pixel, resolution, frame)?)
             }
             PixelSamplerKind::Orthogonal => {
-                // Every column strength 2 has: ask for 3 (any q has them),
-                // then for all of them.
-                let most = OrthogonalArray::new(samples_per_pixel, 3, 2)?.max_dimensions();
-                let array = OrthogonalArray::new(samples_per_pixel, most, 2)?;
-                AnyPixelSampler::Orthogonal(PaddedNd::new(array, frame))
+                if samples_per_pixel == 0 {
+                    return Err(Error::ZeroSamples);
+                }
+                let q = OrthogonalArray::pass_levels(samples_per_pixel).ok_or_else(|| {
+                    let (below, above) = OrthogonalArray::nearest_pass_counts(samples_per_pixel);
+                    Error::NotOrthogonalPixelCount {
+                        samples_per_pixel,
+                        below,
+                        above,
+                    }
+                })?;
+                // Every column strength 2 has: q + 1.
+                let array = OrthogonalArray::new(q * q, q + 1, 2)?;
+                let passes = samples_per_pixel / (q * q);
+                AnyPixelSampler::Orthogonal(PaddedNd::new(array, frame).with_passes(passes))
             }
             PixelSamplerKind::LatinHypercube => {
                 let cube = LatinHypercube::new(samples_per_pixel, LatinHypercube::MAX_DIMENSIONS)?;

@@ -71,6 +71,9 @@ use crate::traits::SamplerNd;
 pub struct PaddedNd<S> {
     sampler: S,
     frame: u32,
+    /// How many passes of the set `samples_per_pixel` counts (1 from
+    /// `new`).
+    passes: u32,
 }
 
 impl<S: SamplerNd> PaddedNd<S> {
@@ -78,7 +81,22 @@ impl<S: SamplerNd> PaddedNd<S> {
     /// of 2^32 unrelated sets of patterns.
     #[inline]
     pub const fn new(sampler: S, frame: u32) -> Self {
-        Self { sampler, frame }
+        Self {
+            sampler,
+            frame,
+            passes: 1,
+        }
+    }
+
+    /// The same pixel sampler counting `passes` passes of its set as its
+    /// samples per pixel: what `PixelSamplerKind::Orthogonal` builds for
+    /// a count `lambda q^2`. The draws are unchanged (an index past the
+    /// set is always a further pass, keyed independently); only
+    /// `samples_per_pixel` reads it. `passes` times the set's length must
+    /// fit in a u32.
+    #[inline]
+    pub(crate) fn with_passes(self, passes: u32) -> Self {
+        Self { passes, ..self }
     }
 
     /// The wrapped sampler.
@@ -122,7 +140,7 @@ impl<S: SamplerNd> PaddedNd<S> {
 impl<S: SamplerNd + Send + Sync> PixelSampler for PaddedNd<S> {
     #[inline]
     fn samples_per_pixel(&self) -> Option<u32> {
-        Some(self.sampler.len())
+        Some(self.sampler.len().wrapping_mul(self.passes))
     }
 
     /// [`Padded`](crate::Padded)'s root: the pixel packed into the key,

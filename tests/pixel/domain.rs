@@ -32,6 +32,14 @@ pub(crate) fn needs_power_of_two(kind: PixelSamplerKind) -> bool {
     )
 }
 
+/// Whether a kind's `spp` samples are one set: all but `orthogonal` at a
+/// count `lambda q^2` with `lambda > 1`, which is `lambda` passes of a
+/// `q^2` array (each pass stratified: `tests/pixel/padded_nd.rs`).
+fn one_set(kind: PixelSamplerKind, spp: u32) -> bool {
+    kind != PixelSamplerKind::Orthogonal
+        || wellspread::OrthogonalArray::nearest_sizes(spp, 2) == (Some(spp), Some(spp))
+}
+
 /// `true` if the values fall into `values.len()` distinct equal strata.
 fn distinct_strata(values: &[f32]) -> bool {
     let n = values.len() as u64;
@@ -88,7 +96,10 @@ proptest! {
     ) {
         for spp in [1 << log2, 2 * odd + 3] {
             for (kind, sampler) in every_kind(spp, frame) {
-                if !stratified_1d(kind) || (needs_power_of_two(kind) && !spp.is_power_of_two()) {
+                if !stratified_1d(kind)
+                    || !one_set(kind, spp)
+                    || (needs_power_of_two(kind) && !spp.is_power_of_two())
+                {
                     continue;
                 }
                 for path in [&[][..], &[key][..], &[key, 3][..]] {
@@ -205,7 +216,7 @@ proptest! {
                 let prefix: Vec<f32> =
                     (0..end).map(|i| sampler.start([x, y], i).next_1d()).collect();
                 prop_assert!(distinct_strata(&prefix), "{kind} prefix of {end}");
-            } else {
+            } else if one_set(kind, spp) {
                 prop_assert!(distinct_strata(&later), "{kind} pass {pass}");
             }
             let pair = sampler.sample_pixel([x, y], pass * spp + 3, 1);
@@ -824,8 +835,8 @@ fn borrowed_owned_and_visited_domains_agree_for_every_kind() {
 /// carries three 16-byte reciprocals (and blue multi-jitter its lattice),
 /// an orthogonal array four (one in its field), so their domains, and
 /// `AnyPixelSampler`'s, are larger: their sizes are
-/// pinned here so that they do not grow unnoticed (`docs/performance.md`
-/// says what getting them under 48 bytes would take).
+/// pinned here so that they do not grow unnoticed (the borrowed domain
+/// `start` returns is 32 bytes for all of them, tested above).
 #[test]
 fn domain_sizes() {
     use core::mem::size_of;
@@ -882,12 +893,12 @@ fn domain_sizes() {
         (
             "PaddedNd<LatinHypercube>",
             size_of::<Domain<PaddedNd<LatinHypercube>>>(),
-            48,
+            56,
         ),
         (
             "PaddedNd<OrthogonalArray>",
             size_of::<Domain<PaddedNd<OrthogonalArray>>>(),
-            112,
+            120,
         ),
         ("AnyPixelSampler", size_of::<Domain<AnyPixelSampler>>(), 120),
     ];

@@ -167,15 +167,88 @@ fn branches_and_passes_get_fresh_arrays() {
     }
 }
 
+/// Any count `lambda q^2` (q a prime power) builds: `lambda` passes of the
+/// `q^2` array with the largest such `q`, each pass a full array (every
+/// pair of a page's dimensions fills the `q x q` grid, every dimension
+/// Latin over the pass), passes unrelated, and `samples_per_pixel` the
+/// count asked for.
 #[test]
-fn orthogonal_counts_that_are_not_squares_of_prime_powers_are_errors() {
-    for (spp, below, above) in [(8, 4, 9), (1, 0, 4), (100, 81, 121)] {
-        match PixelSamplerKind::Orthogonal.build(spp, [64, 64], 0) {
-            Err(Error::NotOrthogonalArraySize {
-                below: b, above: a, ..
-            }) => assert_eq!((b.unwrap_or(0), a), (below, Some(above))),
-            other => panic!("{spp}: {other:?}"),
+fn orthogonal_takes_every_count_lambda_q_squared_as_passes() {
+    for (spp, q) in [
+        (4, 2),
+        (8, 2),
+        (9, 3),
+        (12, 2),
+        (16, 4),
+        (18, 3),
+        (32, 4),
+        (64, 8),
+        (72, 3),
+        (128, 8),
+        (256, 16),
+    ] {
+        let sampler = PixelSamplerKind::Orthogonal
+            .build(spp, [64, 64], 5)
+            .unwrap();
+        assert_eq!(sampler.samples_per_pixel(), Some(spp), "{spp}");
+        let (n, page) = (q * q, q as usize + 1);
+        let widths = vec![1; page];
+        for pixel in [[0, 0], [7, 3]] {
+            let mut passes = Vec::new();
+            for pass in 0..spp / n {
+                let points: Vec<Vec<f32>> = (pass * n..(pass + 1) * n)
+                    .map(|i| values(&sampler, pixel, i, &widths))
+                    .collect();
+                for a in 0..page {
+                    assert!(latin(&points, a), "{spp} spp pass {pass} dimension {a}");
+                    for b in a + 1..page {
+                        assert!(
+                            pair_stratified(&points, q as usize, a, b),
+                            "{spp} spp pass {pass}: dimensions {a} and {b}"
+                        );
+                    }
+                }
+                passes.push(points);
+            }
+            // Passes are keyed apart: no value repeats between two.
+            for pair in passes.windows(2) {
+                let shared = pair[0]
+                    .iter()
+                    .flatten()
+                    .filter(|v| pair[1].iter().flatten().any(|w| w == *v))
+                    .count();
+                assert_eq!(shared, 0, "{spp} spp: two passes share values");
+            }
         }
+    }
+}
+
+/// Counts with no square factor of a prime power are errors that name the
+/// nearest valid counts.
+#[test]
+fn orthogonal_counts_without_a_prime_power_square_factor_are_errors() {
+    for (spp, below, above) in [
+        (1, None, Some(4)),
+        (2, None, Some(4)),
+        (3, None, Some(4)),
+        (5, Some(4), Some(8)),
+        (7, Some(4), Some(8)),
+        (10, Some(9), Some(12)),
+        (u32::MAX, Some(u32::MAX - 3), None),
+    ] {
+        let result = PixelSamplerKind::Orthogonal.build(spp, [64, 64], 0);
+        assert_eq!(
+            result,
+            Err(Error::NotOrthogonalPixelCount {
+                samples_per_pixel: spp,
+                below,
+                above
+            }),
+            "{spp}"
+        );
+        let message = result.unwrap_err().to_string();
+        assert!(message.contains("lambda q^2"), "{message}");
+        assert!(!message.contains('\n'), "{message}");
     }
     assert_eq!(
         PixelSamplerKind::LatinHypercube.build(0, [64, 64], 0),

@@ -315,6 +315,28 @@ impl OrthogonalArray {
         (below, above)
     }
 
+    /// The levels `q` of the strength-2 array whose passes make `n`
+    /// samples: the largest prime power `q` with `q^2` at most
+    /// [`MAX_SAMPLES`](Self::MAX_SAMPLES) dividing `n` (`n = lambda q^2`),
+    /// or `None` if `n` has no such square factor.
+    pub(crate) fn pass_levels(n: u32) -> Option<u32> {
+        let top = n.isqrt().min(field::MAX_ORDER);
+        (2..=top)
+            .rev()
+            .find(|&q| prime_power(q).is_some() && n.is_multiple_of(q * q))
+    }
+
+    /// The counts nearest `n` that [`pass_levels`](Self::pass_levels)
+    /// accepts: the largest below `n` and the smallest above it (every
+    /// multiple of 4 is one, so each is at most 3 away, where it fits in
+    /// a u32).
+    pub(crate) fn nearest_pass_counts(n: u32) -> (Option<u32>, Option<u32>) {
+        let valid = |m: &u32| Self::pass_levels(*m).is_some();
+        let below = (n.saturating_sub(4)..n).rev().find(valid);
+        let above = (n.saturating_add(1)..=n.saturating_add(4)).find(valid);
+        (below.filter(|&m| m < n), above.filter(|&m| m > n))
+    }
+
     /// The per-pattern work: the pattern's hash, its row order and its
     /// choice of columns.
     #[inline(always)]
