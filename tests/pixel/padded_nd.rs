@@ -197,7 +197,7 @@ fn orthogonal_takes_every_count_lambda_q_squared_as_passes() {
             let mut passes = Vec::new();
             for pass in 0..spp / n {
                 let points: Vec<Vec<f32>> = (pass * n..(pass + 1) * n)
-                    .map(|i| values(&sampler, pixel, i, &widths))
+                    .map(|i| values(sampler, pixel, i, &widths))
                     .collect();
                 for a in 0..page {
                     assert!(latin(&points, a), "{spp} spp pass {pass} dimension {a}");
