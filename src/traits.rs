@@ -135,6 +135,19 @@ pub trait SamplerNd {
             *x = self.coordinate(index, pattern, dimension);
         }
     }
+
+    /// Coordinates `first .. first + out.len()` of sample `index` of
+    /// pattern `pattern`, into `out`: exactly what
+    /// [`coordinate`](SamplerNd::coordinate) returns for each, with the
+    /// per-pattern and per-sample work done once (a domain's draw reads
+    /// its values this way from [`PaddedNd`](crate::PaddedNd)'s page).
+    /// The same edges as `coordinate` for dimensions past `dimensions()`.
+    #[inline]
+    fn coordinates(&self, index: u32, pattern: u32, first: u32, out: &mut [f32]) {
+        for (dimension, x) in (first..).zip(out.iter_mut()) {
+            *x = self.coordinate(index, pattern, dimension);
+        }
+    }
 }
 
 /// A progressive sequence: a [`Sampler2D`] whose points form one infinite

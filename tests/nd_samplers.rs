@@ -31,7 +31,8 @@ fn points(sampler: &impl SamplerNd, pattern: u32) -> Vec<f32> {
                 (0.0..1.0).contains(&x),
                 "index {index} dimension {dimension}: {x}"
             );
-            // Spot-check `coordinate` (all of it for small sets).
+            // Spot-check `coordinate` and the runs `coordinates` gives
+            // from this dimension (all of it for small sets).
             if index < 64 || index % 97 == 0 {
                 let alone = sampler.coordinate(index, pattern, dimension);
                 assert_eq!(
@@ -39,6 +40,10 @@ fn points(sampler: &impl SamplerNd, pattern: u32) -> Vec<f32> {
                     x.to_bits(),
                     "index {index} dimension {dimension}"
                 );
+                let run = &point[dimension as usize..(dimension as usize + 4).min(d)];
+                let mut from = vec![f32::NAN; run.len()];
+                sampler.coordinates(index, pattern, dimension, &mut from);
+                assert_eq!(from, run, "index {index} coordinates from {dimension}");
             }
         }
     }

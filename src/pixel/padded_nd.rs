@@ -123,9 +123,8 @@ impl<S: SamplerNd> PaddedNd<S> {
         let mut out = [0.0; W];
         if first as usize + W <= page_len as usize {
             let pattern = child_key(draw.key, salt::PAGE, page) as u32;
-            for (dimension, x) in (first..).zip(&mut out) {
-                *x = self.sampler.coordinate(draw.index, pattern, dimension);
-            }
+            self.sampler
+                .coordinates(draw.index, pattern, first, &mut out);
         } else {
             // A set of fewer than `W` dimensions pads across patterns.
             for (j, x) in (0..).zip(&mut out) {

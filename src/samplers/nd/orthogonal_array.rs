@@ -506,6 +506,16 @@ impl SamplerNd for OrthogonalArray {
         self.coordinate_of(index, pattern.rows.apply(index), &pattern, dimension)
     }
 
+    /// The pattern's row order and column choice once for all of `out`.
+    #[inline]
+    fn coordinates(&self, index: u32, pattern: u32, first: u32, out: &mut [f32]) {
+        let (index, pattern) = (reduce_index(index, self.n), self.prepare(pattern));
+        let row = pattern.rows.apply(index);
+        for (dimension, x) in (first..).zip(out.iter_mut()) {
+            *x = self.coordinate_of(index, row, &pattern, dimension);
+        }
+    }
+
     #[track_caller]
     fn sample(&self, index: u32, pattern: u32, out: &mut [f32]) {
         let out = check_nd_out(out, self.dimensions);
