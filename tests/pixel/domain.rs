@@ -4,8 +4,10 @@ use proptest::prelude::*;
 use wellspread::glam::{Vec2, Vec4};
 use wellspread::metrics::{is_net_base2, net_t_value};
 use wellspread::{
-    AnyPixelSampler, Domain, Draw, Error, Padded, PixelSampler, PixelSamplerKind, Root,
-    SamplerKind, Sobol, ZSobol,
+    AnyPixelSampler, AnySampler, BlueMultiJittered, BlueNoise, CorrelatedMultiJittered, Domain,
+    Draw, Error, Halton, Hammersley, Jittered, LatinHypercube, MultiJittered, NRooks,
+    OrthogonalArray, Padded, PaddedNd, PixelSampler, PixelSamplerKind, Pmj02, Random, Regular,
+    Root, SamplerKind, Sobol, ZSobol,
 };
 
 /// Every pixel sampler at `spp` on a 64 x 64 film, frame `frame`.
@@ -754,12 +756,6 @@ fn sample_pixel_is_the_domain_draw_for_every_kind() {
 /// reference); the owned form is the sampler plus 24 bytes.
 #[test]
 fn borrowed_domains_are_32_bytes_for_every_kind() {
-    use core::mem::size_of;
-    use wellspread::{
-        AnySampler, BlueMultiJittered, BlueNoise, CorrelatedMultiJittered, Halton, Hammersley,
-        Jittered, LatinHypercube, MultiJittered, NRooks, OrthogonalArray, PaddedNd, Pmj02, Random,
-        Regular,
-    };
     let borrowed = [
         size_of::<Domain<&Padded<Regular>>>(),
         size_of::<Domain<&Padded<Random>>>(),
@@ -839,12 +835,6 @@ fn borrowed_owned_and_visited_domains_agree_for_every_kind() {
 /// `start` returns is 32 bytes for all of them, tested above).
 #[test]
 fn domain_sizes() {
-    use core::mem::size_of;
-    use wellspread::{
-        AnySampler, BlueMultiJittered, BlueNoise, CorrelatedMultiJittered, Halton, Hammersley,
-        Jittered, LatinHypercube, MultiJittered, NRooks, OrthogonalArray, PaddedNd, Pmj02, Random,
-        Regular,
-    };
     let small = [
         ("Padded<Sobol>", size_of::<Domain<Padded<Sobol>>>()),
         ("Padded<Pmj02>", size_of::<Domain<Padded<Pmj02>>>()),
