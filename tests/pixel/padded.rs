@@ -3,7 +3,8 @@
 //! padded sequences that are nets, and the ones that are not.
 
 use wellspread::glam::Vec2;
-use wellspread::{Domain, Draw, Padded, PixelSampler, Pmj02, Root, Sobol};
+use wellspread::primitives::{hash_u32, owen_scramble, u32_to_unit_f32};
+use wellspread::{Domain, Draw, Padded, PixelSampler, Pmj02, Root, Sampler2D, Sobol};
 
 use crate::{
     branch_pass, dependence, first_documented_range_not_a_net, other_aligned_blocks_that_are_nets,
@@ -136,5 +137,79 @@ impl<P: PixelSampler> PixelSampler for Reused<P> {
 
     fn sample_pixel(&self, pixel: [u32; 2], index: u32, _pair: u32) -> Vec2 {
         self.0.sample_pixel(pixel, index, 0)
+    }
+}
+
+/// Sobol' dimensions 0 and 1 at `index` in natural order (no index
+/// shuffle), each Owen-scrambled by its own seed.
+fn unshuffled_sobol(index: u32, seeds: [u32; 2]) -> Vec2 {
+    let mut y = 0u32;
+    let mut v = 1u32 << 31;
+    let mut bits = index;
+    while bits != 0 {
+        if bits & 1 == 1 {
+            y ^= v;
+        }
+        v ^= v >> 1;
+        bits >>= 1;
+    }
+    Vec2::new(
+        u32_to_unit_f32(owen_scramble(index.reverse_bits(), seeds[0])),
+        u32_to_unit_f32(owen_scramble(y, seeds[1])),
+    )
+}
+
+#[test]
+fn sobol_prefixes_between_powers_of_two_pay_for_the_prefix_shuffle() {
+    // Per-pixel RMSE of exp(-x^2 - y^2) over the first n samples of 4096
+    // pixels: Padded<Sobol> (index through `prefix_shuffle`), the bare
+    // Sobol (Burley's nested index scramble, which keeps every aligned
+    // block a net) and Owen-scrambled Sobol' in natural order. At powers
+    // of two the three agree; between them the prefix shuffle's last
+    // samples are a random subset of their block and its error is
+    // several times the natural order's, while the nested scramble keeps
+    // it (`docs/quality.md`, Prefixes between powers of two, quotes the
+    // rows printed with `--nocapture`).
+    let exact = 0.557_746_285_351_033_f64;
+    let padded = Padded::new(Sobol::unbounded(), 0);
+    let bare = Sobol::unbounded();
+    let f = |p: Vec2| f64::from(-(p.x * p.x + p.y * p.y)).exp();
+    let rmse = |n: u32, point: &dyn Fn(u32, u32) -> Vec2| -> f64 {
+        let pixels = 4096;
+        let sum: f64 = (0..pixels)
+            .map(|pixel| {
+                let mean = (0..n).map(|i| f(point(pixel, i))).sum::<f64>() / f64::from(n);
+                (mean - exact).powi(2)
+            })
+            .sum();
+        (sum / f64::from(pixels)).sqrt()
+    };
+    for n in [8, 12, 16, 24, 32, 48, 64, 100] {
+        let shuffled = rmse(n, &|pixel, i| {
+            padded.sample_pixel([pixel % 64, pixel / 64], i, 0)
+        });
+        let nested = rmse(n, &|pixel, i| bare.sample(i, pixel));
+        let natural = rmse(n, &|pixel, i| {
+            unshuffled_sobol(i, [hash_u32(pixel), hash_u32(pixel ^ 0x9e37_79b9)])
+        });
+        println!(
+            "n {n}: natural {natural:.2e}, prefix shuffle {shuffled:.2e} ({:.2}x), \
+             nested index scramble {nested:.2e} ({:.2}x)",
+            shuffled / natural,
+            nested / natural
+        );
+        let power_of_two = n.is_power_of_two();
+        assert!(
+            (0.85..1.15).contains(&(nested / natural)),
+            "n {n}: nested {nested} natural {natural}"
+        );
+        if power_of_two {
+            assert!(
+                (0.85..1.15).contains(&(shuffled / natural)),
+                "n {n}: {shuffled} {natural}"
+            );
+        } else {
+            assert!(shuffled > 1.3 * natural, "n {n}: {shuffled} {natural}");
+        }
     }
 }
