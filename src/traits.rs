@@ -226,6 +226,44 @@ pub trait Sequence2D: Sampler2D {
 /// [`prefix_shuffle`](crate::primitives::prefix_shuffle) keyed by the
 /// stream, so every power-of-two prefix of a pixel keeps its net while two
 /// draws pair their samples as freely as prefixes allow.
+///
+/// # Which index ranges of a draw are nets
+///
+/// For [`Sobol`](crate::Sobol) and [`Pmj02`](crate::Pmj02) draws (and
+/// [`ZSobol`](crate::ZSobol)'s and [`BlueNoise`](crate::BlueNoise)'s
+/// inside a pixel), over one stream's indices:
+///
+/// - every power-of-two prefix `0 .. 2^m` and every dyadic block
+///   `[2^m, 2^(m+1))` is a (0,m,2)-net (1D draws a (0,m,1)-net; for
+///   [`Halton`](crate::Halton) the same ranges keep their `2^m` columns of
+///   x, not its base-3 rows);
+/// - no other aligned block: `[j 2^k, (j + 1) 2^k)` with `j >= 2` is a
+///   subset of `2^k` of the `2^m` indices of the dyadic block that holds it,
+///   and many such blocks are not nets (`tests/pixel` counts them);
+/// - a prefix `n` that is not a power of two, `2^m < n < 2^(m+1)`, is the
+///   net `0 .. 2^m` plus a uniformly random subset of `n - 2^m` indices of
+///   the block `[2^m, 2^(m+1))`: the error of its last `n - 2^m` samples is
+///   that of random ones from the block's net, not the finer structure the
+///   unshuffled sequence had there (`docs/quality.md`, section Prefixes
+///   between powers of two, measures the trade with independence).
+///
+/// So a renderer that renders progressive passes picks one of:
+///
+/// - **Doubling passes** (pass 0 is index 0, pass `m` the block
+///   `[2^m, 2^(m+1))`): every pass and every total so far is a net.
+/// - **Passes of `2^k` samples that are nets each**: pass `p` is samples
+///   `0 .. 2^k` of its own key, `start(pixel, i).branch(p)` for `i < 2^k`
+///   (or a fixed-size sampler such as [`ZSobol`](crate::ZSobol), whose
+///   pass rule keys each pass by `p`): independent nets, like the passes
+///   of any fixed-size set.
+/// - **The pass rule of a sequence** (`samples_per_pixel() = Some(2^k)`,
+///   pass `p` the indices `p 2^k .. (p + 1) 2^k`) continues one sequence:
+///   passes 0 and 1 are nets, and the first `2^a` passes together are, but
+///   a single pass `p >= 2` is not.
+/// - **[`Domain::split`](crate::Domain::split)** when the samples of a
+///   pixel are taken together: the `n count` children are samples
+///   `0 .. n count` of one pattern, one net when `n count` is a power of
+///   two.
 pub trait DomainSampler: Sampler2D {
     /// Whether indices past [`len`](Sampler2D::len) continue one sequence
     /// (`true`: the [`Sequence2D`] implementors, whose own docs say why)

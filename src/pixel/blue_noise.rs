@@ -321,9 +321,16 @@ impl PixelColumns for ExplicitColumns {
 ///
 /// # Properties
 ///
-/// - Every power-of-two prefix `0..2^m` (and every aligned block) of every
-///   pixel in every dimension pair is a (0,m,2)-net, checked exactly on the
-///   f32 values (`m <= 24`); in particular every such prefix is Latin.
+/// - Every power-of-two prefix `0..2^m`, and every dyadic block
+///   `[2^m, 2^(m+1))`, of every pixel's indices in every dimension pair is a
+///   (0,m,2)-net, checked exactly on the f32 values (`m <= 24`); in
+///   particular every such range is Latin. No other range is: an aligned
+///   block `[j 2^k, (j + 1) 2^k)` with `j >= 2` is a shuffled subset of its
+///   dyadic block (many are not nets), and a prefix between two powers of
+///   two `2^m < n < 2^(m+1)` is the net `0..2^m` plus a uniformly random
+///   subset of the next block. Progressive passes of `2^k` samples that
+///   are nets each: [`DomainSampler`](crate::DomainSampler)'s section on
+///   which ranges are nets.
 /// - Each point is uniform over `[0, 1)^2`; estimates are unbiased, with
 ///   the per-pixel variance of `Padded<Sobol>`.
 /// - Blue-noise error across pixels at every prefix on integrands that are
@@ -505,8 +512,9 @@ impl<C: PixelColumns> BlueNoise<C> {
     /// the columns were searched for) every pixel visits its samples in the
     /// same order, so squares complement each other at every prefix, not
     /// only at powers of two; from square to square two draws pair their
-    /// samples differently. Every power-of-two prefix stays the same
-    /// aligned block of the sequence.
+    /// samples differently. Every power-of-two prefix, and every dyadic
+    /// block `[2^m, 2^(m+1))`, stays the same aligned block of the
+    /// sequence; other aligned blocks of indices do not.
     #[inline(always)]
     fn index_and_shift(&self, draw: Draw, seeds: OwenSeeds) -> (u32, [u32; 2]) {
         let (code, seed) = Self::translated(draw.pixel_state, draw.stream);

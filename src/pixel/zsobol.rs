@@ -56,6 +56,16 @@ const INDEX_BITS: u32 = 32;
 ///   (0,m,2)-net: one point in each `2^-a x 2^-(m-a)` box, `a = 0..=m`,
 ///   checked exactly on the f32 values (`m <= 24`); 1D draws a (0,m,1)-net,
 ///   4D draws a (3,m,4)-net for `spp >= 8`.
+/// - Inside a pass, every power-of-two prefix `0..2^a` and every dyadic
+///   block `[2^a, 2^(a+1))` of the indices is a (0,a,2)-net too; other
+///   aligned blocks `[j 2^k, (j + 1) 2^k)` (`j >= 2`) are shuffled subsets
+///   of their dyadic block (many are not nets), and a prefix between two
+///   powers of two `2^a < n < 2^(a+1)` is the net `0..2^a` plus a uniformly
+///   random subset of the next block. Each pass of the pass rule (indices
+///   `p spp .. (p + 1) spp`, see Limits) is a complete net, keyed by `p`:
+///   a renderer's progressive passes of `spp` samples are nets each
+///   ([`DomainSampler`](crate::DomainSampler)'s section on which ranges
+///   are nets).
 /// - More: for `k` levels of the Morton hierarchy, the `4^k` pixels of an
 ///   aligned `2^k x 2^k` square together hold a (0, m + 2k, 2)-net.
 /// - Different draws use unrelated block scrambles, index shuffles and

@@ -14,11 +14,13 @@ use wellspread::{
     BlueNoise, Error, ExplicitColumns, Padded, PixelColumns, PixelSampler, SearchedColumns, Sobol,
 };
 
+use crate::{branch_pass, other_aligned_blocks_that_are_nets};
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(256))]
 
     #[test]
-    fn every_power_of_two_prefix_is_a_net(
+    fn every_power_of_two_prefix_and_dyadic_block_is_a_net(
         x in any::<u32>(),
         y in any::<u32>(),
         frame in any::<u32>(),
@@ -29,8 +31,9 @@ proptest! {
         let sampler = BlueNoise::unbounded([u32::MAX, u32::MAX], frame).unwrap();
         let pixel = [x % u32::MAX, y % u32::MAX];
         let n = 1u32 << m;
-        // The prefix and the rest of the next prefix (the indices between
-        // two powers of two are shuffled among themselves only).
+        // The prefix 0..2^m and the dyadic block [2^m, 2^(m+1)), the ranges
+        // the docs say are nets (the indices between two powers of two are
+        // shuffled among themselves only).
         let points: Vec<Vec2> = (block * n..(block + 1) * n)
             .map(|i| sampler.sample_pixel(pixel, i, dimension))
             .collect();
@@ -534,5 +537,52 @@ fn domain_draws_keep_the_nets() {
                 "{pixel:?} n {n}"
             );
         }
+    }
+}
+
+#[test]
+fn other_aligned_blocks_are_not_all_nets() {
+    // The negative the docs state: aligned blocks [j 2^k, (j+1) 2^k) with
+    // j >= 2 are shuffled subsets of their dyadic block. Below 4096, of
+    // the 2046 blocks of 2, 254 of 16 and 14 of 256, at most the share
+    // below is nets (measured: 24% and 29% of the blocks of 2, none of the
+    // others).
+    let sampler = BlueNoise::unbounded([640, 480], 2).unwrap();
+    for pixel in [[0, 0], [300, 17]] {
+        for (k, most) in [(1, 0.4), (4, 0.05), (8, 0.5)] {
+            let (nets, blocks) =
+                other_aligned_blocks_that_are_nets(|i| sampler.sample_pixel(pixel, i, 1), k, 4096);
+            assert!(
+                (nets as f64) < most * blocks as f64,
+                "{pixel:?} blocks of {}: {nets} of {blocks} nets",
+                1 << k
+            );
+        }
+    }
+}
+
+#[test]
+fn passes_through_a_branch_per_pass_are_nets() {
+    // Progressive passes of 16 samples drawn as the docs recommend, pass p
+    // from `start(pixel, i).branch(p)` with i < 16: a net each. The pass
+    // rule (indices 16 p .. 16 (p + 1)) continues the sequence instead, so
+    // its passes p >= 2 are not nets (measured: none of the 14 per pixel).
+    let sampler = BlueNoise::new(16, [640, 480], 8).unwrap();
+    for pixel in [[0, 0], [300, 17]] {
+        let mut rule_nets = 0;
+        for p in 0..16 {
+            let pass = branch_pass(&sampler, pixel, p, 16);
+            assert!(is_net_base2(&pass).unwrap(), "{pixel:?} pass {p}");
+            let rule: Vec<Vec2> = (16 * p..16 * (p + 1))
+                .map(|i| sampler.sample_pixel(pixel, i, 0))
+                .collect();
+            if p >= 2 {
+                rule_nets += usize::from(is_net_base2(&rule).unwrap());
+            }
+        }
+        assert!(
+            rule_nets < 4,
+            "{pixel:?}: {rule_nets} of 14 pass-rule passes nets"
+        );
     }
 }

@@ -100,3 +100,50 @@ pub fn quad_error(spp: u32, point: impl Fn([u32; 2], u32) -> Vec2) -> f64 {
     }
     (sum_squares / 1024.0).sqrt()
 }
+
+/// Whether the points `point(i)`, `i` in `range` (a power-of-two count),
+/// are a (0,m,2)-net.
+fn is_net_over(point: &impl Fn(u32) -> Vec2, range: core::ops::Range<u32>) -> bool {
+    let points: Vec<Vec2> = range.map(point).collect();
+    wellspread::metrics::is_net_base2(&points).unwrap()
+}
+
+/// The index ranges the progressive kinds document as nets: every prefix
+/// `0 .. 2^m` and every dyadic block `[2^m, 2^(m+1))` for `m <= max_m`.
+/// Returns the first range that is not a net.
+pub fn first_documented_range_not_a_net(
+    point: impl Fn(u32) -> Vec2,
+    max_m: u32,
+) -> Option<core::ops::Range<u32>> {
+    (0..=max_m)
+        .flat_map(|m| [0..1 << m, 1 << m..2 << m])
+        .find(|range| !is_net_over(&point, range.clone()))
+}
+
+/// How many of the aligned blocks `[j 2^k, (j + 1) 2^k)` with `j >= 2`
+/// below `end` are nets, of how many: the ranges the docs say are not nets
+/// in general.
+pub fn other_aligned_blocks_that_are_nets(
+    point: impl Fn(u32) -> Vec2,
+    k: u32,
+    end: u32,
+) -> (usize, usize) {
+    let blocks: Vec<u32> = (2..end >> k).collect();
+    let nets = blocks
+        .iter()
+        .filter(|&&j| is_net_over(&point, j << k..(j + 1) << k))
+        .count();
+    (nets, blocks.len())
+}
+
+/// Progressive pass `p` of `spp` samples drawn as the docs recommend for
+/// the sequences: samples `0 .. spp` of `start(pixel, i).branch(p)`.
+pub fn branch_pass(sampler: &dyn PixelSampler, pixel: [u32; 2], p: u32, spp: u32) -> Vec<Vec2> {
+    (0..spp)
+        .map(|i| {
+            wellspread::Domain::start(sampler, pixel, i)
+                .branch(p)
+                .next_2d()
+        })
+        .collect()
+}

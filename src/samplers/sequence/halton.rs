@@ -136,7 +136,12 @@ impl Sampler2D for Halton {
 /// A domain's draws: the sampler's own points at the index read through a
 /// [`prefix_shuffle`] keyed by the stream (Halton visits its points in the
 /// same order for every pattern, so unshuffled draws would pair their
-/// samples), 1D draws Sobol's, 3D and 4D padded.
+/// samples), 1D draws Sobol's, 3D and 4D padded. The shuffle keeps the sets
+/// of indices of every power-of-two prefix and every dyadic block
+/// `[2^m, 2^(m+1))` (one point per column of `2^m`), not the runs of `3^b`
+/// indices nor other aligned blocks, and a prefix between two powers of two
+/// ends in a random subset of its block ([`DomainSampler`]'s section on
+/// which ranges are nets).
 impl DomainSampler for Halton {
     #[inline]
     fn is_progressive(&self) -> bool {

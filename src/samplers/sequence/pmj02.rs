@@ -195,7 +195,11 @@ impl DigitalSequence for Pmj02 {
 /// A domain's draws: 2D draws are pmj02 at the index read through a
 /// [`prefix_shuffle`]; 1D, 3D and 4D draws are the Owen-scrambled Sobol'
 /// ones (pmj02 has no 4D construction; its 1D projection is Sobol's
-/// dimension 0 anyway).
+/// dimension 0 anyway). Every power-of-two prefix and every dyadic block
+/// `[2^m, 2^(m+1))` of a draw's indices is a (0,m,2)-net; unlike the bare
+/// sequence's, other aligned blocks are not, and a prefix between two
+/// powers of two ends in a random subset of its block
+/// ([`DomainSampler`]'s section on which ranges are nets).
 impl DomainSampler for Pmj02 {
     #[inline]
     fn is_progressive(&self) -> bool {

@@ -163,9 +163,13 @@ impl DigitalSequence for Sobol {
 }
 
 /// Draw `k` of a domain: Sobol' dimensions (0, 1) at the index read
-/// through a [`prefix_shuffle`] (so every power-of-two prefix of a pixel
-/// is a net and two draws pair their samples freely), 1D draws dimension
-/// 0, 3D and 4D draws the 4D set ([`DomainSampler`]'s table).
+/// through a [`prefix_shuffle`] (so every power-of-two prefix of a pixel,
+/// and every dyadic block `[2^m, 2^(m+1))`, is a net and two draws pair
+/// their samples freely), 1D draws dimension 0, 3D and 4D draws the 4D set
+/// ([`DomainSampler`]'s table). Unlike the bare sequence's, other aligned
+/// blocks of a draw's indices are not nets, and a prefix between two powers
+/// of two ends in a random subset of its block: [`DomainSampler`]'s section
+/// on which ranges are nets says what a progressive renderer should use.
 impl DomainSampler for Sobol {
     #[inline]
     fn is_progressive(&self) -> bool {
