@@ -62,12 +62,17 @@ pub(crate) fn check_film(samples_per_pixel: u32, resolution: [u32; 2]) -> Result
 /// # Edges, the same for every pixel sampler, debug and release
 ///
 /// - **Index at or beyond the count.** With `samples_per_pixel() =
-///   Some(n)`, indices `p n .. (p + 1) n` are pass `p`: a complete set with
-///   the sampler's guarantees. Fixed-size samplers (the grid family,
-///   [`ZSobol`]) key each pass's sets by `p` (independent sets); the
-///   progressive sequences ([`Sobol`](crate::Sobol), [`Pmj02`](crate::Pmj02),
-///   [`Halton`](crate::Halton), [`BlueNoise`]) go on along their sequence,
-///   so every prefix `0 .. 2^k` stays a net. Nothing panics, nothing
+///   Some(n)`, indices `p n .. (p + 1) n` are pass `p`. Fixed-size
+///   samplers (the grid family, [`ZSobol`], the orthogonal array) key each
+///   pass's sets by `p`: each pass is a complete set with the sampler's
+///   guarantees, independent of the others. The progressive sequences
+///   ([`Sobol`](crate::Sobol), [`Pmj02`](crate::Pmj02),
+///   [`Halton`](crate::Halton), [`BlueNoise`]) go on along their
+///   sequence: every prefix `0 .. 2^k` stays a net, and so do passes 0
+///   and 1 and the first `2^a` passes together, but a single pass `p >= 2`
+///   is not a net (for passes that are nets each, draw pass `p` from
+///   `start(pixel, i).branch(p)`, `i < n`: see
+///   [`DomainSampler`](crate::DomainSampler)). Nothing panics, nothing
 ///   repeats.
 /// - **Progressive samplers have no count.** `samples_per_pixel()` is
 ///   `None` for an unbounded sequence (`Padded::new(Sobol::unbounded(), _)`):
