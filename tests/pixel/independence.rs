@@ -11,9 +11,9 @@
 //! power-of-two prefix must stay a net, at most 1.20x, 1.15x and 1.08x,
 //! with ties at most 0.55 at 4 spp and within 0.05 at 16. A prefix-keeping
 //! pairing cannot do better than uniform shuffles inside each dyadic block
-//! of indices, which simulate (12,000 trials of Owen-scrambled van der
-//! Corput streams, `../shared/prototypes/stream_pairing.py`) at 1.14x,
-//! 1.10x and 1.056x; the crate measures 1.14x to 1.17x, 1.11x to 1.13x
+//! of indices, which simulate (Owen-scrambled van der Corput streams,
+//! `lab/examples/prefix_pairing.py`, the "shell" row) at 1.14x, 1.10x
+//! and 1.05x; the crate measures 1.14x to 1.17x, 1.11x to 1.13x
 //! and 1.04x to 1.06x (`docs/quality.md`), so 1.05x at 64 spp is below the
 //! floor and the bound there is 1.08x.
 
