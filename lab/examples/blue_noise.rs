@@ -349,6 +349,22 @@ fn check(args: &Args) -> Result<(), Failure> {
 /// The tables, and the pictures and page asked for.
 pub fn run(args: &Args) -> Result<String, Failure> {
     check(args)?;
+    // The page is read, and its block found, before the measurement: a
+    // FIFO, a device or a page without the block fails at once.
+    let page = match &args.docs {
+        Some(path) => {
+            shared::check_page_path("--docs", path)?;
+            let page = shared::read_page(path)?;
+            let (Some(start), Some(end)) = (page.find(BEGIN), page.find(END)) else {
+                return Err(Failure::Input(format!(
+                    "{}: no generated block ({BEGIN} ... {END}) to rewrite",
+                    path.display()
+                )));
+            };
+            Some((path, page, start, end))
+        }
+        None => None,
+    };
     let mut out = String::new();
     let spp = args.spp as usize;
     writeln!(
@@ -451,14 +467,7 @@ pub fn run(args: &Args) -> Result<String, Failure> {
             }
         }
     }
-    if let Some(path) = &args.docs {
-        let page = shared::read_page(path)?;
-        let (Some(start), Some(end)) = (page.find(BEGIN), page.find(END)) else {
-            return Err(Failure::Input(format!(
-                "{}: no generated block ({BEGIN} ... {END}) to rewrite",
-                path.display()
-            )));
-        };
+    if let Some((path, page, start, end)) = page {
         let page = format!("{}{BEGIN}\n{out}{}", &page[..start], &page[end..]);
         std::fs::write(path, page)
             .map_err(|e| Failure::Io(format!("cannot write {}: {e}", path.display())))?;

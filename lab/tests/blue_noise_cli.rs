@@ -102,11 +102,40 @@ fn io_failures_exit_1_and_a_bad_page_exits_2() {
         err.starts_with("blue_noise: cannot read /nonexistent/page.md"),
         "{err}"
     );
-    // An endless page is refused at the size limit, not read into memory.
+    // A device or a FIFO is refused before the measurement (a FIFO's
+    // opening blocked until a reader came).
     if cfg!(target_os = "linux") {
-        let (status, _, err) = run(&[&small[..], &["--docs", "/dev/zero"]].concat());
-        assert_eq!(status, 2, "{err}");
-        assert!(err.contains("/dev/zero is larger than 4 MiB"), "{err}");
-        assert_eq!(err.lines().count(), 1, "{err:?}");
+        let dir = std::env::temp_dir().join(format!("blue-noise-fifo-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let fifo = dir.join("page.fifo");
+        let mut refused = vec![(std::path::PathBuf::from("/dev/zero"), "a device")];
+        let made = std::process::Command::new("mkfifo").arg(&fifo).status();
+        if made.is_ok_and(|status| status.success()) {
+            refused.push((fifo, "a FIFO"));
+        }
+        for (path, kind) in refused {
+            let path = path.to_str().unwrap();
+            // 256 x 256 at 256 spp and 64 frames would take minutes: the
+            // refusal comes first.
+            let big = ["--size", "256", "--spp", "256", "--frames", "64"];
+            let (status, _, err) = run(&[&big[..], &["--docs", path]].concat());
+            assert_eq!(status, 2, "{err}");
+            assert!(
+                err.contains(&format!("--docs {path}: {kind}, not a regular file")),
+                "{err}"
+            );
+            assert_eq!(err.lines().count(), 1, "{err:?}");
+        }
+        std::fs::remove_dir_all(&dir).unwrap();
     }
+    // A page over the size limit is refused before the measurement, not
+    // read into memory.
+    let dir = std::env::temp_dir().join(format!("blue-noise-big-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let big_page = dir.join("page.md");
+    std::fs::write(&big_page, vec![b'x'; 4 * 1024 * 1024 + 1]).unwrap();
+    let (status, _, err) = run(&[&small[..], &["--docs", big_page.to_str().unwrap()]].concat());
+    assert_eq!(status, 2, "{err}");
+    assert!(err.contains("is larger than 4 MiB"), "{err}");
+    std::fs::remove_dir_all(&dir).unwrap();
 }
