@@ -1031,9 +1031,33 @@ fn perpendicular(v: DVec3, axis: DVec3) -> DVec3 {
     (v - v.dot(axis) * axis).normalize_or_zero()
 }
 
+/// How far from a planar light's plane a shading point must be, relative
+/// to its distance from the light's farthest vertex, to see the light at
+/// all: 2^-24, the rounding of an f32 coordinate. Nearer the plane (on the
+/// light, on an edge or a vertex, or in the plane outside it, up to that
+/// rounding) the light has no solid angle as the point's coordinates can
+/// state it, and the edges' directions from the point are too nearly
+/// opposite to be computed: the light warps return pdf 0. Above it, the
+/// f64 geometry is accurate to `2^-52 / 2^-24 = 2^-28` of the light's
+/// angles.
+const IN_PLANE: f64 = 1.0 / 16_777_216.0;
+
+/// Whether a shading point sees a planar light off its plane: `to_light`
+/// is from the point to a point of the light, `normal` the light's normal
+/// (any length; zero for a degenerate light), `reach` the point's
+/// distance to the light's farthest vertex (or a bound of it within a
+/// small factor). False in the plane up to [`IN_PLANE`], for a zero normal
+/// and for NaN. The one place the triangle and rectangle lights decide
+/// that a point is in their plane, for their sample and pdf alike.
+#[inline]
+fn sees_plane(to_light: DVec3, normal: DVec3, reach: f64) -> bool {
+    to_light.dot(normal).abs() > IN_PLANE * normal.length() * reach
+}
+
 /// The spherical triangle of a light triangle seen from a point: the unit
 /// directions to its vertices and its solid angle, or `None` when that is
-/// 0 (the point is in the triangle's plane or on a vertex) or not finite.
+/// 0 (the point is in the triangle's plane, up to [`IN_PLANE`], which
+/// takes in its edges and vertices) or not finite.
 struct SphericalTriangle {
     a: DVec3,
     b: DVec3,
@@ -1045,14 +1069,14 @@ impl SphericalTriangle {
     #[inline]
     fn new(a: Vec3, b: Vec3, c: Vec3, p: Vec3) -> Option<Self> {
         let p = p.as_dvec3();
-        let (a, b, c) = (
-            (a.as_dvec3() - p).normalize_or_zero(),
-            (b.as_dvec3() - p).normalize_or_zero(),
-            (c.as_dvec3() - p).normalize_or_zero(),
-        );
+        let (a, b, c) = (a.as_dvec3() - p, b.as_dvec3() - p, c.as_dvec3() - p);
+        let reach = a.length().max(b.length()).max(c.length());
+        if !sees_plane(a, (b - a).cross(c - a), reach) {
+            return None;
+        }
+        let (a, b, c) = (a.normalize(), b.normalize(), c.normalize());
         let area = spherical_triangle_area(a, b, c);
-        (solid_angle_pdf(area) > 0.0 && a != DVec3::ZERO && b != DVec3::ZERO && c != DVec3::ZERO)
-            .then_some(Self { a, b, c, area })
+        (solid_angle_pdf(area) > 0.0).then_some(Self { a, b, c, area })
     }
 }
 
@@ -1095,11 +1119,17 @@ fn degenerate_triangle(a: Vec3, b: Vec3, c: Vec3, p: Vec3) -> (Vec3, f32, Vec3) 
 ///   unit length, the barycentrics are `>= 0` and sum to 1 within 2^-23.
 ///   For every `u` of `[0, 1)^2` the pdf is the same positive finite value
 ///   (the 2^-24 edge grid is tested).
-/// - A triangle of no solid angle from `p` (`p` in its plane or on a
-///   vertex, or a solid angle below about 3e-39 sr, where `1 / omega`
-///   overflows f32) has no direction to give: the result is the direction
-///   to the centroid with pdf 0, which a renderer skips (or samples the
-///   triangle by area). The vertex order does not matter.
+/// - A triangle of no solid angle from `p` (`p` in its plane, which takes
+///   in its edges and vertices, a degenerate triangle, or a solid angle
+///   below about 3e-39 sr, where `1 / omega` overflows f32) has no
+///   direction to give: the result is the direction to the centroid with
+///   pdf 0, which a renderer skips (or samples the triangle by area).
+///   [`spherical_triangle_pdf`] decides it in the same place and returns 0
+///   too. "In the plane" is up to f32 rounding: a `p` within 2^-24 of its
+///   distance to the farthest vertex from the plane counts as in it (its
+///   f32 coordinates cannot say on which side it is). Otherwise the
+///   direction is finite and within the triangle as seen from `p` up to
+///   its f32 rounding. The vertex order does not matter.
 /// - Input `u` outside `[0, 1)^2` is clamped into it (NaN to 0).
 ///
 /// # Cost
@@ -1443,13 +1473,23 @@ impl SphericalRectangleF32 {
     /// nearly opposite ([`RECTANGLE_F32_MIN_MODULUS2`]).
     #[inline]
     fn new(corner: Vec3, ex: Vec3, ey: Vec3, p: Vec3) -> Option<Self> {
+        // The solid angle and the map do not change with the scale: scale
+        // the lengths by a power of two (exact) so that the largest
+        // coordinate is in [1/2, 1), and no square or product below
+        // overflows or underflows, whatever the rectangle's size.
+        let d = corner - p;
+        let largest = d.abs().max(ex.abs()).max(ey.abs()).max_element();
+        if !(largest.is_finite() && largest >= f32::MIN_POSITIVE) {
+            return None;
+        }
+        let scale = libm::scalbnf(1.0, -libm::frexpf(largest).1);
+        let (d, ex, ey) = (d * scale, ex * scale, ey * scale);
         let ex_len = ex.length();
         let x = ex / ex_len;
         let ey = ey - ey.dot(x) * x;
         let ey_len = ey.length();
         let y = ey / ey_len;
         let mut z = x.cross(y);
-        let d = corner - p;
         let (x0, y0) = (d.dot(x), d.dot(y));
         let mut z0 = d.dot(z);
         if z0 > 0.0 {
@@ -1503,6 +1543,8 @@ impl SphericalRectangleF32 {
             // sees the edges y = y0 and y = y1 over the plane.
             && z2 >= RECTANGLE_F32_MIN_GRAZING * (yy0 + z2)
             && z2 >= RECTANGLE_F32_MIN_GRAZING * (yy1 + z2)
+            // Every intermediate that could overflow or divide by 0.
+            && (det + d1 + d2 + det1 + det2 + im).is_finite()
             && (c2 + c3 + s2 + s3).is_finite()
             && (x + y + d).is_finite();
         fine.then(|| Self {
@@ -1583,9 +1625,15 @@ impl SphericalRectangleF32 {
 /// - `ex` and `ey` should be perpendicular (a rectangle). For a
 ///   parallelogram, the part of `ey` perpendicular to `ex` is used: the
 ///   directions cover the rectangle spanned by `ex` and that part.
-/// - A rectangle of no solid angle from `p` (`p` in its plane, a zero
-///   edge, or below about 3e-39 sr) gives the direction to its centre with
-///   pdf 0 and `(s, t) = (0.5, 0.5)`.
+/// - A rectangle of no solid angle from `p` (`p` in its plane, which
+///   takes in its edges and corners, a zero edge, or below about 3e-39
+///   sr) gives the direction to its centre with pdf 0 and `(s, t) = (0.5,
+///   0.5)`; [`spherical_rectangle_pdf`] decides it in the same place and
+///   returns 0 too. "In the plane" is up to f32 rounding, as for
+///   [`spherical_triangle`]: within 2^-24 of `p`'s distance to the
+///   farthest corner (bounded by `|corner - p| + |ex| + |ey|`).
+///   Otherwise the direction is finite and within the rectangle as seen
+///   from `p` up to its f32 rounding.
 /// - Input `u` outside `[0, 1)^2` is clamped into it (NaN to 0).
 ///
 /// # Cost
@@ -1601,6 +1649,12 @@ impl SphericalRectangleF32 {
 /// shading point; it is recomputed per call to keep the function pure.
 ///
 /// # Limits
+///
+/// Both evaluations work at any scale f32 holds (coordinates from about
+/// 1e-38 to 3e38): the f32 one first scales the lengths by a power of two
+/// (exact, so its values do not change) to bring the largest coordinate
+/// to `[1/2, 1)`, and hands over to the f64 one if any intermediate is
+/// not finite.
 ///
 /// The f32 evaluation is used where the rectangle covers at least 2^-10
 /// sr (about 1e-3), is seen at more than about 2.6 degrees above its
@@ -1653,14 +1707,14 @@ pub fn spherical_rectangle(
     p: Vec3,
 ) -> (Vec3, f32, Vec2) {
     let u = clamp_unit2(u);
-    if let Some(r) = SphericalRectangleF32::new(corner, ex, ey, p) {
-        return r.sample(u);
+    match RectangleLight::new(corner, ex, ey, p) {
+        RectangleLight::F32(r) => r.sample(u),
+        RectangleLight::F64(r) => r.sample(u),
+        RectangleLight::Degenerate => {
+            let centre = corner + 0.5 * (ex + ey);
+            ((centre - p).normalize_or(Vec3::Z), 0.0, Vec2::splat(0.5))
+        }
     }
-    let Some(r) = SphericalRectangle::new(corner, ex, ey, p) else {
-        let centre = corner + 0.5 * (ex + ey);
-        return ((centre - p).normalize_or(Vec3::Z), 0.0, Vec2::splat(0.5));
-    };
-    r.sample(u)
 }
 
 /// The density of [`spherical_rectangle`] with respect to solid angle, `1
@@ -1678,9 +1732,42 @@ pub fn spherical_rectangle(
 /// ```
 #[inline]
 pub fn spherical_rectangle_pdf(corner: Vec3, ex: Vec3, ey: Vec3, p: Vec3) -> f32 {
-    match SphericalRectangleF32::new(corner, ex, ey, p) {
-        Some(r) => 1.0 / r.area,
-        None => SphericalRectangle::new(corner, ex, ey, p).map_or(0.0, |r| solid_angle_pdf(r.area)),
+    match RectangleLight::new(corner, ex, ey, p) {
+        RectangleLight::F32(r) => 1.0 / r.area,
+        RectangleLight::F64(r) => solid_angle_pdf(r.area),
+        RectangleLight::Degenerate => 0.0,
+    }
+}
+
+/// A rectangle light seen from a point, as [`spherical_rectangle`] and
+/// [`spherical_rectangle_pdf`] both evaluate it: decided in this one place.
+enum RectangleLight {
+    /// The f32 evaluation, where it is accurate.
+    F32(SphericalRectangleF32),
+    /// The f64 evaluation elsewhere.
+    F64(SphericalRectangle),
+    /// No solid angle: the point in the rectangle's plane (up to
+    /// [`IN_PLANE`], which takes in its edges and corners), a zero edge,
+    /// a solid angle whose inverse is not a finite f32, or non-finite
+    /// input.
+    Degenerate,
+}
+
+impl RectangleLight {
+    #[inline]
+    fn new(corner: Vec3, ex: Vec3, ey: Vec3, p: Vec3) -> Self {
+        let (d, dx, dy) = (
+            corner.as_dvec3() - p.as_dvec3(),
+            ex.as_dvec3(),
+            ey.as_dvec3(),
+        );
+        if !sees_plane(d, dx.cross(dy), d.length() + dx.length() + dy.length()) {
+            return Self::Degenerate;
+        }
+        if let Some(r) = SphericalRectangleF32::new(corner, ex, ey, p) {
+            return Self::F32(r);
+        }
+        SphericalRectangle::new(corner, ex, ey, p).map_or(Self::Degenerate, Self::F64)
     }
 }
 

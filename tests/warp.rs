@@ -1845,3 +1845,154 @@ fn solid_angle_sampling_beats_area_sampling_near_lights() {
         }
     }
 }
+
+// ---------------------------------------------------------------------------
+// Light warps on degenerate and huge geometry: regressions and properties.
+
+/// How far outside a light a returned direction may point, in radians:
+/// the f32 rounding of a unit direction is 2^-24 (6e-8), and the light's
+/// edges as seen from `p` are computed in f64 from f32 coordinates.
+const HIT_SLACK: f64 = 1e-6;
+
+/// Whether the direction `w` from `p` is inside the convex planar polygon
+/// `vertices` (in order) as seen from `p`, up to [`HIT_SLACK`] radians:
+/// on the inner side of the plane through `p` and each edge, in f64.
+fn hits_polygon(w: Vec3, vertices: &[Vec3], p: Vec3) -> bool {
+    let v: Vec<[f64; 3]> = vertices.iter().map(|&q| sub(dv(q), dv(p))).collect();
+    let n = v.len();
+    // The polygon's orientation as seen from p: the sign of its normal
+    // along the direction to it.
+    let normal = cross(sub(v[1], v[0]), sub(v[2], v[0]));
+    let side = dot(normal, v[0]).signum();
+    let w = unit3(dv(w));
+    (0..n).all(|i| {
+        let edge = cross(v[i], v[(i + 1) % n]);
+        let length = dot(edge, edge).sqrt();
+        length > 0.0 && side * dot(edge, w) / length >= -HIT_SLACK
+    })
+}
+
+/// The four corners of the rectangle light in order.
+fn rectangle_corners(corner: Vec3, ex: Vec3, ey: Vec3) -> [Vec3; 4] {
+    let (x, y) = (ex.as_dvec3(), ey.as_dvec3());
+    let ey = (y - y.dot(x) / x.length_squared() * x).as_vec3();
+    [corner, corner + ex, corner + ex + ey, corner + ey]
+}
+
+/// The case: the shading point on an edge of the triangle (the
+/// midpoint of `a b`, exact in f32) sees no solid angle: pdf 0 and a
+/// finite direction from the warp and the pdf alike, never NaN.
+#[test]
+fn spherical_triangle_with_the_point_on_an_edge_has_pdf_zero() {
+    let (a, b, c) = (
+        Vec3::ZERO,
+        Vec3::new(0.1, 0.1, 0.2),
+        Vec3::new(1.0, 0.0, 0.3),
+    );
+    let p = (a + b) / 2.0;
+    for u in [Vec2::ZERO, Vec2::new(0.3, 0.7), Vec2::splat(LAST)] {
+        let (w, pdf, bary) = spherical_triangle(u, a, b, c, p);
+        assert!(
+            w.is_finite() && pdf == 0.0 && bary == Vec3::splat(1.0 / 3.0),
+            "{w} {pdf}"
+        );
+    }
+    assert_eq!(spherical_triangle_pdf(a, b, c, p), 0.0);
+    assert_eq!(spherical_triangle_inverse(Vec3::Z, a, b, c, p), Vec2::ZERO);
+    // Every edge, and the vertices: the same.
+    for (x, y) in [(a, b), (b, c), (c, a)] {
+        for t in [0.0, 0.25, 0.5, 1.0] {
+            let q = x + t * (y - x);
+            assert_eq!(spherical_triangle_pdf(a, b, c, q), 0.0, "{q}");
+        }
+    }
+    // Just above the edge the triangle is a half-plane: about pi sr.
+    let n = (b - a).cross(c - a).normalize();
+    let above = p + 1e-4 * n;
+    let pdf = spherical_triangle_pdf(a, b, c, above);
+    assert!((f64::from(pdf) * PI - 1.0).abs() < 0.01, "{pdf}");
+    let (w, pdf_w, _) = spherical_triangle(Vec2::new(0.3, 0.7), a, b, c, above);
+    assert_eq!(pdf_w, pdf);
+    assert!(hits_polygon(w, &[a, b, c], above), "{w}");
+}
+
+/// The case: a cube face seen from its centre (2 pi / 3 sr, pdf
+/// 0.4775) at every scale f32 holds, through the point the f32
+/// evaluation's squares used to overflow (6e12 to 1e19) and where they
+/// would underflow; the directions hit the face.
+#[test]
+fn spherical_rectangle_is_exact_for_a_cube_face_at_every_scale() {
+    let exact = 1.5 / PI;
+    for k in -30..=37 {
+        for m in [1.0f32, 3.7, 6.0] {
+            let s = m * 10f32.powi(k);
+            let (corner, ex, ey) = (Vec3::new(-s, -s, s), 2.0 * s * Vec3::X, 2.0 * s * Vec3::Y);
+            if !(corner + ex + ey).is_finite() {
+                continue;
+            }
+            let pdf = spherical_rectangle_pdf(corner, ex, ey, Vec3::ZERO);
+            assert!(
+                (f64::from(pdf) / exact - 1.0).abs() < 1e-5,
+                "scale {s:e}: pdf {pdf}"
+            );
+            for u in random_points(0x0038_0002, 256) {
+                let (w, pdf_w, st) = spherical_rectangle(u, corner, ex, ey, Vec3::ZERO);
+                assert_eq!(pdf_w, pdf);
+                assert!(
+                    hits_polygon(w, &rectangle_corners(corner, ex, ey), Vec3::ZERO),
+                    "scale {s:e}: {u} -> {w}"
+                );
+                let at = corner.as_dvec3()
+                    + f64::from(st.x) * ex.as_dvec3()
+                    + f64::from(st.y) * ey.as_dvec3();
+                let hit = at.normalize();
+                assert!(
+                    (hit - w.as_dvec3()).length() < 1e-5,
+                    "scale {s:e}: {w} vs {hit}"
+                );
+            }
+        }
+    }
+}
+
+/// The case: a point on an edge of the rectangle (`corner + ex /
+/// 2`, as f32 rounds it) over random rectangles: either pdf 0 (in the
+/// plane up to f32 rounding) or a positive pdf whose directions hit the
+/// light, from the warp and the pdf alike.
+#[test]
+fn spherical_rectangle_with_the_point_on_an_edge_hits_or_has_pdf_zero() {
+    let mut rng = Pcg32::seed_from_u64(0x0038_0005);
+    let mut v = || {
+        Vec3::new(
+            rng.random_range(-2.0..2.0),
+            rng.random_range(-2.0..2.0),
+            rng.random_range(-2.0..2.0),
+        )
+    };
+    let (mut zero, mut positive) = (0, 0);
+    for _ in 0..20_000 {
+        let (corner, ex, ey0) = (v(), v(), v());
+        let ey = ey0 - ey0.dot(ex) / ex.length_squared() * ex;
+        for p in [
+            corner + ex / 2.0,
+            corner + ey / 3.0,
+            corner,
+            corner + ex + ey,
+        ] {
+            let pdf = spherical_rectangle_pdf(corner, ex, ey, p);
+            let (w, pdf_w, st) = spherical_rectangle(Vec2::new(0.4, 0.9), corner, ex, ey, p);
+            assert_eq!(pdf_w.to_bits(), pdf.to_bits());
+            assert!(w.is_finite() && st.is_finite() && pdf.is_finite() && pdf >= 0.0);
+            if pdf > 0.0 {
+                positive += 1;
+                assert!(
+                    hits_polygon(w, &rectangle_corners(corner, ex, ey), p),
+                    "{corner} {ex} {ey} {p}: {w}"
+                );
+            } else {
+                zero += 1;
+            }
+        }
+    }
+    println!("points on an edge or corner: pdf 0 for {zero}, positive and hitting for {positive}");
+}
