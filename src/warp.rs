@@ -958,8 +958,12 @@ pub fn rectangle(u: Vec2, corner: Vec3, ex: Vec3, ey: Vec3) -> Vec3 {
 }
 
 /// The density of [`rectangle`]'s point with respect to area, `1 / |ex x
-/// ey|`. A degenerate parallelogram (parallel or zero edges) gives
-/// `+inf`, as [`uniform_triangle_pdf`] does for a triangle of area 0.
+/// ey|`, computed in f64 and rounded once, so it is right for every f32
+/// edge (in f32, `|ex x ey|^2` overflows from edges of about 1e10 and
+/// underflows below about 1e-10). A degenerate parallelogram (parallel or
+/// zero edges), or one of area below about 3e-39 (where `1 / area`
+/// overflows f32), gives `+inf`, as [`uniform_triangle_pdf`] does for a
+/// triangle of area 0.
 ///
 /// ```
 /// use wellspread::warp::rectangle_pdf;
@@ -969,7 +973,7 @@ pub fn rectangle(u: Vec2, corner: Vec3, ex: Vec3, ey: Vec3) -> Vec3 {
 /// ```
 #[inline]
 pub fn rectangle_pdf(ex: Vec3, ey: Vec3) -> f32 {
-    1.0 / ex.cross(ey).length()
+    (1.0 / ex.as_dvec3().cross(ey.as_dvec3()).length()) as f32
 }
 
 /// The inverse of [`rectangle`]: the `(s, t)` of a point of the
@@ -1033,14 +1037,24 @@ fn perpendicular(v: DVec3, axis: DVec3) -> DVec3 {
 
 /// How far from a planar light's plane a shading point must be, relative
 /// to its distance from the light's farthest vertex, to see the light at
-/// all: 2^-24, the rounding of an f32 coordinate. Nearer the plane (on the
-/// light, on an edge or a vertex, or in the plane outside it, up to that
-/// rounding) the light has no solid angle as the point's coordinates can
-/// state it, and the edges' directions from the point are too nearly
-/// opposite to be computed: the light warps return pdf 0. Above it, the
-/// f64 geometry is accurate to `2^-52 / 2^-24 = 2^-28` of the light's
-/// angles.
-const IN_PLANE: f64 = 1.0 / 16_777_216.0;
+/// all: 2^-20, sixteen roundings of an f32 coordinate (2^-24). Nearer the
+/// plane (on the light, on an edge or a vertex, or in the plane outside
+/// it, up to that margin) the light's solid angle is decided by the
+/// rounding of the point's coordinates, and the edges' directions from the
+/// point are too nearly opposite to be computed: the light warps return
+/// pdf 0. At 2^-24 the triangle map's directions still missed the light
+/// by more than 1e-6 rad for points just off the plane (`tests/warp.rs`'s
+/// property tests found them); at 2^-20 none of their cases does.
+const IN_PLANE: f64 = 1.0 / 1_048_576.0;
+
+/// The thinnest spherical triangle or rectangle the light warps sample:
+/// its solid angle at least 2^-20 of its longest side's squared chord.
+/// The maps place the direction through the angles at the corners and the
+/// arcs between them, which lose their digits in f64 for a needle (a thin
+/// light seen at a grazing angle, or a short edge far from the others, as
+/// seen from `p`); such a light is sampled as degenerate, pdf 0, as one in
+/// its plane is.
+const NEEDLE: f64 = 1.0 / 1_048_576.0;
 
 /// Whether a shading point sees a planar light off its plane: `to_light`
 /// is from the point to a point of the light, `normal` the light's normal
@@ -1049,10 +1063,21 @@ const IN_PLANE: f64 = 1.0 / 16_777_216.0;
 /// small factor). False in the plane up to [`IN_PLANE`], for a zero normal
 /// and for NaN. The one place the triangle and rectangle lights decide
 /// that a point is in their plane, for their sample and pdf alike.
+///
+/// It also refuses a light thinner than [`SLIVER`]: `longest` is its
+/// longest side, and `|normal| <= SLIVER longest^2` (twice the area of a
+/// triangle, the area of a rectangle) is a needle or a sliver, or a
+/// degenerate light that f32 rounding made a sliver of, whose plane the
+/// coordinates do not fix.
 #[inline]
-fn sees_plane(to_light: DVec3, normal: DVec3, reach: f64) -> bool {
-    to_light.dot(normal).abs() > IN_PLANE * normal.length() * reach
+fn sees_plane(to_light: DVec3, normal: DVec3, reach: f64, longest: f64) -> bool {
+    let area = normal.length();
+    to_light.dot(normal).abs() > IN_PLANE * area * reach && area > SLIVER * longest * longest
 }
+
+/// The thinnest planar light the light warps sample: its area at least
+/// 2^-20 of its longest side squared (a 1 mm wide strip may be 1 km long).
+const SLIVER: f64 = 1.0 / 1_048_576.0;
 
 /// The spherical triangle of a light triangle seen from a point: the unit
 /// directions to its vertices and its solid angle, or `None` when that is
@@ -1071,12 +1096,18 @@ impl SphericalTriangle {
         let p = p.as_dvec3();
         let (a, b, c) = (a.as_dvec3() - p, b.as_dvec3() - p, c.as_dvec3() - p);
         let reach = a.length().max(b.length()).max(c.length());
-        if !sees_plane(a, (b - a).cross(c - a), reach) {
+        let longest = (b - a).length().max((c - b).length()).max((a - c).length());
+        if !sees_plane(a, (b - a).cross(c - a), reach, longest) {
             return None;
         }
         let (a, b, c) = (a.normalize(), b.normalize(), c.normalize());
         let area = spherical_triangle_area(a, b, c);
-        (solid_angle_pdf(area) > 0.0).then_some(Self { a, b, c, area })
+        // A needle as seen from p: too thin for Arvo's map in f64.
+        let longest = (a - b)
+            .length_squared()
+            .max((b - c).length_squared())
+            .max((c - a).length_squared());
+        (solid_angle_pdf(area) > 0.0 && area >= NEEDLE * longest).then_some(Self { a, b, c, area })
     }
 }
 
@@ -1125,11 +1156,16 @@ fn degenerate_triangle(a: Vec3, b: Vec3, c: Vec3, p: Vec3) -> (Vec3, f32, Vec3) 
 ///   direction to give: the result is the direction to the centroid with
 ///   pdf 0, which a renderer skips (or samples the triangle by area).
 ///   [`spherical_triangle_pdf`] decides it in the same place and returns 0
-///   too. "In the plane" is up to f32 rounding: a `p` within 2^-24 of its
-///   distance to the farthest vertex from the plane counts as in it (its
-///   f32 coordinates cannot say on which side it is). Otherwise the
+///   too. "In the plane" is up to a few f32 roundings: a `p` within 2^-20
+///   of its distance to the farthest vertex from the plane counts as in
+///   it (its f32 coordinates barely say on which side it is). So is a sliver
+///   (area below 2^-20 of the longest side squared) and a needle as seen
+///   from `p` (solid angle below 2^-20 of the longest side's squared
+///   chord), where Arvo's map loses its digits in f64. Otherwise the
 ///   direction is finite and within the triangle as seen from `p` up to
-///   its f32 rounding. The vertex order does not matter.
+///   its f32 rounding (`tests/warp.rs` checks 1e-6 rad over random,
+///   degenerate and edge geometry at scales 1e-6 to 1e18). The vertex
+///   order does not matter.
 /// - Input `u` outside `[0, 1)^2` is clamped into it (NaN to 0).
 ///
 /// # Cost
@@ -1484,12 +1520,15 @@ impl SphericalRectangleF32 {
         }
         let scale = libm::scalbnf(1.0, -libm::frexpf(largest).1);
         let (d, ex, ey) = (d * scale, ex * scale, ey * scale);
-        let ex_len = ex.length();
-        let x = ex / ex_len;
-        let ey = ey - ey.dot(x) * x;
-        let ey_len = ey.length();
-        let y = ey / ey_len;
-        let mut z = x.cross(y);
+        // The frame in f64, rounded once: the part of ey perpendicular to
+        // ex cancels in f32 when the two are nearly parallel.
+        let (exd, eyd) = (ex.as_dvec3(), ey.as_dvec3());
+        let xd = exd / exd.length();
+        let eyd = eyd - eyd.dot(xd) * xd;
+        let yd = eyd / eyd.length();
+        let (ex_len, ey_len) = (exd.length() as f32, eyd.length() as f32);
+        let (x, y) = (xd.as_vec3(), yd.as_vec3());
+        let mut z = xd.cross(yd).as_vec3();
         let (x0, y0) = (d.dot(x), d.dot(y));
         let mut z0 = d.dot(z);
         if z0 > 0.0 {
@@ -1629,11 +1668,13 @@ impl SphericalRectangleF32 {
 ///   takes in its edges and corners, a zero edge, or below about 3e-39
 ///   sr) gives the direction to its centre with pdf 0 and `(s, t) = (0.5,
 ///   0.5)`; [`spherical_rectangle_pdf`] decides it in the same place and
-///   returns 0 too. "In the plane" is up to f32 rounding, as for
-///   [`spherical_triangle`]: within 2^-24 of `p`'s distance to the
-///   farthest corner (bounded by `|corner - p| + |ex| + |ey|`).
-///   Otherwise the direction is finite and within the rectangle as seen
-///   from `p` up to its f32 rounding.
+///   returns 0 too. "In the plane" is up to a few f32 roundings, as for
+///   [`spherical_triangle`]: within 2^-20 of `p`'s distance to the
+///   farthest corner (bounded by `|corner - p| + |ex| + |ey|`). So are
+///   slivers and needles, as for [`spherical_triangle`]. Otherwise the
+///   direction is finite and within the rectangle as seen from `p` within
+///   1e-4 rad (the f32 evaluation's accuracy; `tests/warp.rs` checks it
+///   over random, degenerate and edge geometry at scales 1e-6 to 1e18).
 /// - Input `u` outside `[0, 1)^2` is clamped into it (NaN to 0).
 ///
 /// # Cost
@@ -1761,13 +1802,32 @@ impl RectangleLight {
             ex.as_dvec3(),
             ey.as_dvec3(),
         );
-        if !sees_plane(d, dx.cross(dy), d.length() + dx.length() + dy.length()) {
+        let (lx, ly) = (dx.length(), dy.length());
+        if !sees_plane(d, dx.cross(dy), d.length() + lx + ly, lx.max(ly)) {
             return Self::Degenerate;
         }
-        if let Some(r) = SphericalRectangleF32::new(corner, ex, ey, p) {
-            return Self::F32(r);
+        let light = if let Some(r) = SphericalRectangleF32::new(corner, ex, ey, p) {
+            Self::F32(r)
+        } else {
+            SphericalRectangle::new(corner, ex, ey, p).map_or(Self::Degenerate, Self::F64)
+        };
+        // A needle as seen from p (see NEEDLE): the diagonals' squared
+        // chords bound the longest side's.
+        let area = match &light {
+            Self::F32(r) => f64::from(r.area),
+            Self::F64(r) => r.area,
+            Self::Degenerate => return light,
+        };
+        let (c00, c11) = (d.normalize(), (d + dx + dy).normalize());
+        let (c10, c01) = ((d + dx).normalize(), (d + dy).normalize());
+        let longest = (c00 - c11)
+            .length_squared()
+            .max((c10 - c01).length_squared());
+        if area >= NEEDLE * longest {
+            light
+        } else {
+            Self::Degenerate
         }
-        SphericalRectangle::new(corner, ex, ey, p).map_or(Self::Degenerate, Self::F64)
     }
 }
 

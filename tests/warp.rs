@@ -1849,16 +1849,22 @@ fn solid_angle_sampling_beats_area_sampling_near_lights() {
 // ---------------------------------------------------------------------------
 // Light warps on degenerate and huge geometry: regressions and properties.
 
-/// How far outside a light a returned direction may point, in radians:
-/// the f32 rounding of a unit direction is 2^-24 (6e-8), and the light's
-/// edges as seen from `p` are computed in f64 from f32 coordinates.
+/// How far outside a triangle light a returned direction may point, in
+/// radians: the f32 rounding of a unit direction is 2^-24 (6e-8), and the
+/// light's edges as seen from `p` are computed in f64 from f32
+/// coordinates.
 const HIT_SLACK: f64 = 1e-6;
 
+/// The same for a rectangle light: its f32 evaluation's directions are
+/// within 1e-4 of the f64 ones (its docs).
+const RECTANGLE_HIT_SLACK: f64 = 1e-4;
+
 /// Whether the direction `w` from `p` is inside the convex planar polygon
-/// `vertices` (in order) as seen from `p`, up to [`HIT_SLACK`] radians:
-/// on the inner side of the plane through `p` and each edge, in f64.
-fn hits_polygon(w: Vec3, vertices: &[Vec3], p: Vec3) -> bool {
-    let v: Vec<[f64; 3]> = vertices.iter().map(|&q| sub(dv(q), dv(p))).collect();
+/// `vertices` (in order) as seen from `p`:
+/// on the inner side of the plane through `p` and each edge, in f64, up
+/// to `slack` radians.
+fn hits_polygon(w: Vec3, vertices: &[[f64; 3]], p: Vec3, slack: f64) -> bool {
+    let v: Vec<[f64; 3]> = vertices.iter().map(|&q| sub(q, dv(p))).collect();
     let n = v.len();
     // The polygon's orientation as seen from p: the sign of its normal
     // along the direction to it.
@@ -1868,15 +1874,15 @@ fn hits_polygon(w: Vec3, vertices: &[Vec3], p: Vec3) -> bool {
     (0..n).all(|i| {
         let edge = cross(v[i], v[(i + 1) % n]);
         let length = dot(edge, edge).sqrt();
-        length > 0.0 && side * dot(edge, w) / length >= -HIT_SLACK
+        length > 0.0 && side * dot(edge, w) / length >= -slack
     })
 }
 
-/// The four corners of the rectangle light in order.
-fn rectangle_corners(corner: Vec3, ex: Vec3, ey: Vec3) -> [Vec3; 4] {
-    let (x, y) = (ex.as_dvec3(), ey.as_dvec3());
-    let ey = (y - y.dot(x) / x.length_squared() * x).as_vec3();
-    [corner, corner + ex, corner + ex + ey, corner + ey]
+/// The four corners of the rectangle light in order, in f64.
+fn rectangle_corners(corner: Vec3, ex: Vec3, ey: Vec3) -> [[f64; 3]; 4] {
+    let (c, x, y) = (corner.as_dvec3(), ex.as_dvec3(), ey.as_dvec3());
+    let y = y - y.dot(x) / x.length_squared() * x;
+    [c, c + x, c + x + y, c + y].map(|q| q.to_array())
 }
 
 /// The case: the shading point on an edge of the triangle (the
@@ -1913,7 +1919,10 @@ fn spherical_triangle_with_the_point_on_an_edge_has_pdf_zero() {
     assert!((f64::from(pdf) * PI - 1.0).abs() < 0.01, "{pdf}");
     let (w, pdf_w, _) = spherical_triangle(Vec2::new(0.3, 0.7), a, b, c, above);
     assert_eq!(pdf_w, pdf);
-    assert!(hits_polygon(w, &[a, b, c], above), "{w}");
+    assert!(
+        hits_polygon(w, &[dv(a), dv(b), dv(c)], above, HIT_SLACK),
+        "{w}"
+    );
 }
 
 /// The case: a cube face seen from its centre (2 pi / 3 sr, pdf
@@ -1939,7 +1948,12 @@ fn spherical_rectangle_is_exact_for_a_cube_face_at_every_scale() {
                 let (w, pdf_w, st) = spherical_rectangle(u, corner, ex, ey, Vec3::ZERO);
                 assert_eq!(pdf_w, pdf);
                 assert!(
-                    hits_polygon(w, &rectangle_corners(corner, ex, ey), Vec3::ZERO),
+                    hits_polygon(
+                        w,
+                        &rectangle_corners(corner, ex, ey),
+                        Vec3::ZERO,
+                        RECTANGLE_HIT_SLACK
+                    ),
                     "scale {s:e}: {u} -> {w}"
                 );
                 let at = corner.as_dvec3()
@@ -1986,7 +2000,12 @@ fn spherical_rectangle_with_the_point_on_an_edge_hits_or_has_pdf_zero() {
             if pdf > 0.0 {
                 positive += 1;
                 assert!(
-                    hits_polygon(w, &rectangle_corners(corner, ex, ey), p),
+                    hits_polygon(
+                        w,
+                        &rectangle_corners(corner, ex, ey),
+                        p,
+                        RECTANGLE_HIT_SLACK
+                    ),
                     "{corner} {ex} {ey} {p}: {w}"
                 );
             } else {
@@ -1995,4 +2014,276 @@ fn spherical_rectangle_with_the_point_on_an_edge_hits_or_has_pdf_zero() {
         }
     }
     println!("points on an edge or corner: pdf 0 for {zero}, positive and hitting for {positive}");
+}
+
+/// A coordinate of `u`: the square's edges (0 and `1 - 2^-24`), its
+/// middle, and anything.
+fn edge_coordinate() -> impl Strategy<Value = f32> {
+    prop_oneof![Just(0.0f32), Just(LAST), Just(0.5), 0.0f32..1.0]
+}
+
+fn edge_u() -> impl Strategy<Value = Vec2> {
+    (edge_coordinate(), edge_coordinate()).prop_map(|(x, y)| Vec2::new(x, y))
+}
+
+/// The scale of a light's geometry (its size and distance together):
+/// powers of ten from 1e-6 to 1e18, and 1.
+fn geometry_scale() -> impl Strategy<Value = f64> {
+    prop_oneof![(-6i32..=18).prop_map(|e| 10f64.powi(e)), Just(1.0)]
+}
+
+fn point_in(extent: f64) -> impl Strategy<Value = [f64; 3]> {
+    [-extent..extent, -extent..extent, -extent..extent]
+}
+
+fn add(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+}
+
+fn mul(s: f64, a: [f64; 3]) -> [f64; 3] {
+    [s * a[0], s * a[1], s * a[2]]
+}
+
+fn f32v(a: [f64; 3]) -> Vec3 {
+    Vec3::new(a[0] as f32, a[1] as f32, a[2] as f32)
+}
+
+/// A planar light's shading point relative to the light's plane
+/// `origin + s e1 + t e2`: `kind` 0 anywhere in `[-3, 3]^3`, 1 on an edge
+/// or a corner (`(s, t)` on the unit square's boundary, with `edge_t`),
+/// 2 in the plane (`s, t` in `[-1, 2]`), 3 that plus `height` of the
+/// light's size along its normal (1e-9 to 0.1).
+#[allow(clippy::too_many_arguments)]
+fn shading_point(
+    kind: u8,
+    origin: [f64; 3],
+    e1: [f64; 3],
+    e2: [f64; 3],
+    free: [f64; 3],
+    (s, t): (f64, f64),
+    edge_t: f64,
+    height: f64,
+) -> [f64; 3] {
+    let on = |s: f64, t: f64| add(origin, add(mul(s, e1), mul(t, e2)));
+    match kind {
+        0 => mul(3.0, free),
+        1 => match (s * 4.0) as u32 {
+            0 => on(edge_t, 0.0),
+            1 => on(0.0, edge_t),
+            2 => on(1.0, edge_t),
+            _ => on(edge_t, 1.0),
+        },
+        2 => on(3.0 * s - 1.0, 3.0 * t - 1.0),
+        _ => {
+            let n = unit3(cross(e1, e2));
+            let size = dot(e1, e1).sqrt().max(dot(e2, e2).sqrt());
+            add(on(3.0 * s - 1.0, 3.0 * t - 1.0), mul(height * size, n))
+        }
+    }
+}
+
+fn edge_parameter() -> impl Strategy<Value = f64> {
+    prop_oneof![Just(0.0), Just(0.5), Just(1.0), 0.0f64..1.0]
+}
+
+fn height() -> impl Strategy<Value = f64> {
+    prop_oneof![(-9i32..=-1).prop_map(|e| 10f64.powi(e)), Just(1e-7)]
+}
+
+/// How close to degenerate a shape is: its second edge is `thin` times a
+/// free vector plus a multiple of the first (0 is degenerate).
+fn thinness() -> impl Strategy<Value = f64> {
+    prop_oneof![Just(1.0), Just(0.0), Just(1e-6), Just(1e-3), 0.0f64..1.0]
+}
+
+/// The triangle light's answers: the warp and its pdf agree bit for bit,
+/// and either the pdf is 0 (a finite direction to the centroid,
+/// barycentrics 1/3) or it is positive and finite and the unit direction
+/// hits the triangle (within [`HIT_SLACK`] radians) at finite barycentrics
+/// that sum to 1; never NaN. The inverse of the direction is in `[0, 1)^2`.
+fn check_triangle(a: Vec3, b: Vec3, c: Vec3, p: Vec3, u: Vec2) -> Result<(), TestCaseError> {
+    let pdf = spherical_triangle_pdf(a, b, c, p);
+    let (w, pdf_w, bary) = spherical_triangle(u, a, b, c, p);
+    prop_assert_eq!(pdf.to_bits(), pdf_w.to_bits());
+    prop_assert!(pdf.is_finite() && pdf >= 0.0, "pdf {}", pdf);
+    prop_assert!(w.is_finite() && bary.is_finite(), "{} {}", w, bary);
+    if pdf > 0.0 {
+        prop_assert!(
+            (w.length() - 1.0).abs() <= 2.0 * f32::EPSILON,
+            "|w| {}",
+            w.length()
+        );
+        prop_assert!(
+            bary.min_element() >= 0.0 && (bary.element_sum() - 1.0).abs() <= 2.0 * f32::EPSILON
+        );
+        prop_assert!(
+            hits_polygon(w, &[dv(a), dv(b), dv(c)], p, HIT_SLACK),
+            "{} misses",
+            w
+        );
+    } else {
+        prop_assert_eq!(bary, Vec3::splat(1.0 / 3.0));
+    }
+    let back = spherical_triangle_inverse(w, a, b, c, p);
+    prop_assert!(
+        back.min_element() >= 0.0 && back.max_element() < 1.0,
+        "inverse {}",
+        back
+    );
+    Ok(())
+}
+
+/// The rectangle light's answers, as [`check_triangle`]'s: `(s, t)` in
+/// `[0, 1]^2`, `(0.5, 0.5)` with pdf 0.
+fn check_rectangle(
+    corner: Vec3,
+    ex: Vec3,
+    ey: Vec3,
+    p: Vec3,
+    u: Vec2,
+) -> Result<(), TestCaseError> {
+    let pdf = spherical_rectangle_pdf(corner, ex, ey, p);
+    let (w, pdf_w, st) = spherical_rectangle(u, corner, ex, ey, p);
+    prop_assert_eq!(pdf.to_bits(), pdf_w.to_bits());
+    prop_assert!(pdf.is_finite() && pdf >= 0.0, "pdf {}", pdf);
+    prop_assert!(w.is_finite() && st.is_finite(), "{} {}", w, st);
+    if pdf > 0.0 {
+        prop_assert!(
+            (w.length() - 1.0).abs() <= 2.0 * f32::EPSILON,
+            "|w| {}",
+            w.length()
+        );
+        prop_assert!(
+            st.min_element() >= 0.0 && st.max_element() <= 1.0,
+            "st {}",
+            st
+        );
+        prop_assert!(
+            hits_polygon(
+                w,
+                &rectangle_corners(corner, ex, ey),
+                p,
+                RECTANGLE_HIT_SLACK
+            ),
+            "{} misses",
+            w
+        );
+    } else {
+        prop_assert_eq!(st, Vec2::splat(0.5));
+    }
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(20000))]
+
+    /// Triangle lights at every scale, degenerate and near-degenerate,
+    /// with the point anywhere, on an edge or a vertex, in the plane or
+    /// just off it; `u` on the square's edges.
+    #[test]
+    fn spherical_triangle_hits_or_says_zero(
+        scale in geometry_scale(),
+        (a, e1, free_e2, free) in (point_in(1.0), point_in(1.0), point_in(1.0), point_in(1.0)),
+        thin in thinness(),
+        along in -1.0f64..2.0,
+        kind in 0u8..4,
+        st in (0.0f64..1.0, 0.0f64..1.0),
+        edge_t in edge_parameter(),
+        height in height(),
+        u in edge_u(),
+    ) {
+        let e2 = add(mul(along, e1), mul(thin, free_e2));
+        let p = shading_point(kind, a, e1, e2, free, st, edge_t, height);
+        let (b, c) = (add(a, e1), add(a, e2));
+        let at = |v: [f64; 3]| f32v(mul(scale, v));
+        check_triangle(at(a), at(b), at(c), at(p), u)?;
+    }
+
+    /// Rectangle lights the same way (`ey` need not be perpendicular: the
+    /// warp uses its part perpendicular to `ex`).
+    #[test]
+    fn spherical_rectangle_hits_or_says_zero(
+        scale in geometry_scale(),
+        (corner, ex, free_ey, free) in (point_in(1.0), point_in(1.0), point_in(1.0), point_in(1.0)),
+        thin in thinness(),
+        along in -0.5f64..0.5,
+        kind in 0u8..4,
+        st in (0.0f64..1.0, 0.0f64..1.0),
+        edge_t in edge_parameter(),
+        height in height(),
+        u in edge_u(),
+    ) {
+        let ey = add(mul(along, ex), mul(thin, free_ey));
+        let p = shading_point(kind, corner, ex, ey, free, st, edge_t, height);
+        let at = |v: [f64; 3]| f32v(mul(scale, v));
+        check_rectangle(at(corner), at(ex), at(ey), at(p), u)?;
+    }
+
+    /// The area and cone maps at every scale and edge: finite points with
+    /// a positive finite pdf (the rectangle's `+inf` only for a
+    /// parallelogram of no f32 area, as documented), never NaN.
+    #[test]
+    fn area_and_cone_warps_are_finite_with_a_positive_pdf(
+        scale in geometry_scale(),
+        (corner, ex, free_ey) in (point_in(1.0), point_in(1.0), point_in(1.0)),
+        thin in thinness(),
+        cos_max in prop_oneof![Just(-1.0f32), Just(0.0), Just(1.0), Just(1.0 - 1e-7), Just(f32::NAN), Just(2.0), -1.0f32..1.0],
+        u in edge_u(),
+        uz in edge_coordinate(),
+    ) {
+        let (corner, ex, ey) = (f32v(mul(scale, corner)), f32v(mul(scale, ex)), f32v(mul(scale, mul(thin, free_ey))));
+        let q = rectangle(u, corner, ex, ey);
+        let pdf = rectangle_pdf(ex, ey);
+        prop_assert!(q.is_finite() && !pdf.is_nan() && pdf > 0.0, "{} {}", q, pdf);
+        let area = ex.as_dvec3().cross(ey.as_dvec3()).length();
+        if area > 1e-38 && area < 1e38 {
+            prop_assert!(pdf.is_finite() && (f64::from(pdf) * area - 1.0).abs() < 1e-6, "pdf {} area {}", pdf, area);
+        }
+        let v = uniform_cone(u, cos_max);
+        let cone_pdf = uniform_cone_pdf(cos_max);
+        prop_assert!(v.is_finite() && (v.length() - 1.0).abs() <= 2.0 * f32::EPSILON && cone_pdf.is_finite() && cone_pdf > 0.0);
+        let bary = uniform_triangle(u);
+        prop_assert!(bary.min_element() >= 0.0 && (bary.element_sum() - 1.0).abs() <= f32::EPSILON);
+        let ball = uniform_ball(u.extend(uz));
+        prop_assert!(ball.is_finite() && uniform_ball_pdf(ball) > 0.0);
+    }
+
+    /// The direction maps of the unit shapes at the square's edges: in
+    /// their domain with a positive finite pdf there.
+    #[test]
+    fn shape_warps_are_finite_with_a_positive_pdf(u in edge_u(), n in prop_oneof![Just(1u32), Just(u32::MAX), 1u32..1000]) {
+        let good = |pdf: f32| pdf.is_finite() && pdf > 0.0;
+        let d = concentric_disk(u);
+        prop_assert!(d.is_finite() && good(concentric_disk_pdf(d)));
+        let v = cosine_hemisphere(u);
+        prop_assert!(v.is_finite() && good(cosine_hemisphere_pdf(v.z)) || u.x == 0.0 && v.z == 0.0 || v.z <= 1e-3, "{}", v);
+        let v = uniform_hemisphere(u);
+        prop_assert!(v.is_finite() && good(uniform_hemisphere_pdf(v)));
+        let v = uniform_sphere(u);
+        prop_assert!(v.is_finite() && good(uniform_sphere_pdf(v)));
+        let (i, r) = discrete(u.x, n);
+        prop_assert!(i < n && (0.0..1.0).contains(&r) && good(discrete_pdf(n)));
+    }
+
+    /// Weighted choices over weights from 0 to f32::MAX: built, every
+    /// choice has a positive finite pmf; refused, a typed error.
+    #[test]
+    fn weighted_choices_choose_what_has_weight(
+        weights in proptest::collection::vec(prop_oneof![Just(0.0f32), Just(f32::MIN_POSITIVE), Just(f32::MAX), Just(1e-30), 0.0f32..10.0], 1..40),
+        u in edge_coordinate(),
+    ) {
+        match (Discrete::new(&weights), AliasTable::new(&weights)) {
+            (Ok(d), Ok(t)) => {
+                for (i, r, pmf, own) in [(d.sample(u), d.pmf(d.sample(u).0)), (t.sample(u), t.pmf(t.sample(u).0))]
+                    .map(|((i, r, pmf), own)| (i, r, pmf, own))
+                {
+                    prop_assert!(weights[i as usize] > 0.0 && pmf.is_finite() && pmf > 0.0, "{} {}", i, pmf);
+                    prop_assert!((0.0..1.0).contains(&r));
+                    prop_assert_eq!(pmf, own);
+                }
+            }
+            (Err(_), Err(_)) => prop_assert!(weights.iter().all(|&w| w == 0.0)),
+            (d, t) => prop_assert!(false, "{:?} {:?}", d.err(), t.err()),
+        }
+    }
 }
