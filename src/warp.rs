@@ -1069,11 +1069,24 @@ const NEEDLE: f64 = 1.0 / 1_048_576.0;
 /// triangle, the area of a rectangle) is a needle or a sliver, or a
 /// degenerate light that f32 rounding made a sliver of, whose plane the
 /// coordinates do not fix.
+///
+/// The two conditions compound (a sliver seen from near its plane and
+/// its line): their product must pass [`SLIVER_IN_PLANE`] too.
 #[inline]
 fn sees_plane(to_light: DVec3, normal: DVec3, reach: f64, longest: f64) -> bool {
     let area = normal.length();
-    to_light.dot(normal).abs() > IN_PLANE * area * reach && area > SLIVER * longest * longest
+    let off = to_light.dot(normal).abs() / (area * reach);
+    let thin = area / (longest * longest);
+    off > IN_PLANE && thin > SLIVER && off * thin > SLIVER_IN_PLANE
 }
+
+/// The least product of a light's thinness (area over longest side
+/// squared) and the point's height over its plane (over its distance),
+/// 2^-30: their f64 errors multiply, and below it the triangle map's
+/// directions missed the light by more than 1e-6 rad (`tests/warp.rs`'s
+/// property tests found a sliver of 1.5e-6 seen from 1.1e-6 above its
+/// plane missing by 2e-5 rad).
+const SLIVER_IN_PLANE: f64 = 1.0 / 1_073_741_824.0;
 
 /// The thinnest planar light the light warps sample: its area at least
 /// 2^-20 of its longest side squared (a 1 mm wide strip may be 1 km long).
@@ -1161,7 +1174,9 @@ fn degenerate_triangle(a: Vec3, b: Vec3, c: Vec3, p: Vec3) -> (Vec3, f32, Vec3) 
 ///   it (its f32 coordinates barely say on which side it is). So is a sliver
 ///   (area below 2^-20 of the longest side squared) and a needle as seen
 ///   from `p` (solid angle below 2^-20 of the longest side's squared
-///   chord), where Arvo's map loses its digits in f64. Otherwise the
+///   chord), where Arvo's map loses its digits in f64, and a thin light
+///   seen from near its plane (the product of its area over its longest
+///   side squared and `p`'s relative height below 2^-30). Otherwise the
 ///   direction is finite and within the triangle as seen from `p` up to
 ///   its f32 rounding (`tests/warp.rs` checks 1e-6 rad over random,
 ///   degenerate and edge geometry at scales 1e-6 to 1e18). The vertex

@@ -2096,6 +2096,34 @@ fn thinness() -> impl Strategy<Value = f64> {
     prop_oneof![Just(1.0), Just(0.0), Just(1e-6), Just(1e-3), 0.0f64..1.0]
 }
 
+/// A planar light for the property tests, in f32: its origin, its edges
+/// `e1` and `e2 = along e1 + thin free` (degenerate for `thin = 0`), a
+/// shading point ([`shading_point`]) and `u`, scaled by
+/// [`geometry_scale`].
+fn light_case(
+    along: std::ops::Range<f64>,
+) -> impl Strategy<Value = (Vec3, Vec3, Vec3, Vec3, Vec2)> {
+    (
+        geometry_scale(),
+        (point_in(1.0), point_in(1.0), point_in(1.0), point_in(1.0)),
+        thinness(),
+        along,
+        0u8..4,
+        (0.0f64..1.0, 0.0f64..1.0),
+        edge_parameter(),
+        height(),
+        edge_u(),
+    )
+        .prop_map(
+            |(scale, (o, e1, free_e2, free), thin, along, kind, st, edge_t, height, u)| {
+                let e2 = add(mul(along, e1), mul(thin, free_e2));
+                let p = shading_point(kind, o, e1, e2, free, st, edge_t, height);
+                let at = |v: [f64; 3]| f32v(mul(scale, v));
+                (at(o), at(e1), at(e2), at(p), u)
+            },
+        )
+}
+
 /// The triangle light's answers: the warp and its pdf agree bit for bit,
 /// and either the pdf is 0 (a finite direction to the centroid,
 /// barycentrics 1/3) or it is positive and finite and the unit direction
@@ -2177,46 +2205,20 @@ fn check_rectangle(
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(20000))]
 
-    /// Triangle lights at every scale, degenerate and near-degenerate,
-    /// with the point anywhere, on an edge or a vertex, in the plane or
-    /// just off it; `u` on the square's edges.
+    /// Triangle lights (`a`, `a + e1`, `a + e2`) at every scale,
+    /// degenerate and near-degenerate, with the point anywhere, on an edge
+    /// or a vertex, in the plane or just off it; `u` on the square's
+    /// edges.
     #[test]
-    fn spherical_triangle_hits_or_says_zero(
-        scale in geometry_scale(),
-        (a, e1, free_e2, free) in (point_in(1.0), point_in(1.0), point_in(1.0), point_in(1.0)),
-        thin in thinness(),
-        along in -1.0f64..2.0,
-        kind in 0u8..4,
-        st in (0.0f64..1.0, 0.0f64..1.0),
-        edge_t in edge_parameter(),
-        height in height(),
-        u in edge_u(),
-    ) {
-        let e2 = add(mul(along, e1), mul(thin, free_e2));
-        let p = shading_point(kind, a, e1, e2, free, st, edge_t, height);
-        let (b, c) = (add(a, e1), add(a, e2));
-        let at = |v: [f64; 3]| f32v(mul(scale, v));
-        check_triangle(at(a), at(b), at(c), at(p), u)?;
+    fn spherical_triangle_hits_or_says_zero((a, e1, e2, p, u) in light_case(-1.0..2.0)) {
+        check_triangle(a, a + e1, a + e2, p, u)?;
     }
 
     /// Rectangle lights the same way (`ey` need not be perpendicular: the
     /// warp uses its part perpendicular to `ex`).
     #[test]
-    fn spherical_rectangle_hits_or_says_zero(
-        scale in geometry_scale(),
-        (corner, ex, free_ey, free) in (point_in(1.0), point_in(1.0), point_in(1.0), point_in(1.0)),
-        thin in thinness(),
-        along in -0.5f64..0.5,
-        kind in 0u8..4,
-        st in (0.0f64..1.0, 0.0f64..1.0),
-        edge_t in edge_parameter(),
-        height in height(),
-        u in edge_u(),
-    ) {
-        let ey = add(mul(along, ex), mul(thin, free_ey));
-        let p = shading_point(kind, corner, ex, ey, free, st, edge_t, height);
-        let at = |v: [f64; 3]| f32v(mul(scale, v));
-        check_rectangle(at(corner), at(ex), at(ey), at(p), u)?;
+    fn spherical_rectangle_hits_or_says_zero((corner, ex, ey, p, u) in light_case(-0.5..0.5)) {
+        check_rectangle(corner, ex, ey, p, u)?;
     }
 
     /// The area and cone maps at every scale and edge: finite points with
