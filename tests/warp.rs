@@ -2124,45 +2124,52 @@ fn light_case(
         )
 }
 
-/// The triangle light's answers: the warp and its pdf agree bit for bit,
-/// and either the pdf is 0 (a finite direction to the centroid,
-/// barycentrics 1/3) or it is positive and finite and the unit direction
-/// hits the triangle (within [`HIT_SLACK`] radians) at finite barycentrics
-/// that sum to 1; never NaN. The inverse of the direction is in `[0, 1)^2`.
-fn check_triangle(a: Vec3, b: Vec3, c: Vec3, p: Vec3, u: Vec2) -> Result<(), TestCaseError> {
-    let pdf = spherical_triangle_pdf(a, b, c, p);
-    let (w, pdf_w, bary) = spherical_triangle(u, a, b, c, p);
+/// What every light warp's answer must be: the warp's pdf is the pdf
+/// function's bit for bit, finite and `>= 0`; the direction is finite;
+/// with a positive pdf it is unit and `hits` the light. Returns whether the
+/// pdf is positive.
+fn check_light_answer(
+    pdf: f32,
+    pdf_w: f32,
+    w: Vec3,
+    hits: impl Fn() -> bool,
+) -> Result<bool, TestCaseError> {
     prop_assert_eq!(pdf.to_bits(), pdf_w.to_bits());
     prop_assert!(pdf.is_finite() && pdf >= 0.0, "pdf {}", pdf);
-    prop_assert!(w.is_finite() && bary.is_finite(), "{} {}", w, bary);
+    prop_assert!(w.is_finite(), "{}", w);
     if pdf > 0.0 {
         prop_assert!(
             (w.length() - 1.0).abs() <= 2.0 * f32::EPSILON,
             "|w| {}",
             w.length()
         );
-        prop_assert!(
-            bary.min_element() >= 0.0 && (bary.element_sum() - 1.0).abs() <= 2.0 * f32::EPSILON
-        );
-        prop_assert!(
-            hits_polygon(w, &[dv(a), dv(b), dv(c)], p, HIT_SLACK),
-            "{} misses",
-            w
-        );
+        prop_assert!(hits(), "{} misses", w);
+    }
+    Ok(pdf > 0.0)
+}
+
+/// The triangle light's answers ([`check_light_answer`], within
+/// [`HIT_SLACK`] radians): with a positive pdf, barycentrics `>= 0` that
+/// sum to 1, else 1/3 each (the direction to the centroid); never NaN.
+/// The inverse of the direction is in `[0, 1)^2`.
+fn check_triangle(a: Vec3, b: Vec3, c: Vec3, p: Vec3, u: Vec2) -> Result<(), TestCaseError> {
+    let pdf = spherical_triangle_pdf(a, b, c, p);
+    let (w, pdf_w, bary) = spherical_triangle(u, a, b, c, p);
+    let hits = || hits_polygon(w, &[dv(a), dv(b), dv(c)], p, HIT_SLACK);
+    if check_light_answer(pdf, pdf_w, w, hits)? {
+        let sum = bary.element_sum();
+        prop_assert!(bary.min_element() >= 0.0 && (sum - 1.0).abs() <= 2.0 * f32::EPSILON);
     } else {
         prop_assert_eq!(bary, Vec3::splat(1.0 / 3.0));
     }
     let back = spherical_triangle_inverse(w, a, b, c, p);
-    prop_assert!(
-        back.min_element() >= 0.0 && back.max_element() < 1.0,
-        "inverse {}",
-        back
-    );
+    prop_assert!((0.0..1.0).contains(&back.min_element()) && back.max_element() < 1.0);
     Ok(())
 }
 
-/// The rectangle light's answers, as [`check_triangle`]'s: `(s, t)` in
-/// `[0, 1]^2`, `(0.5, 0.5)` with pdf 0.
+/// The rectangle light's answers, as [`check_triangle`]'s (within
+/// [`RECTANGLE_HIT_SLACK`]): `(s, t)` in `[0, 1]^2`, `(0.5, 0.5)` with pdf
+/// 0.
 fn check_rectangle(
     corner: Vec3,
     ex: Vec3,
@@ -2172,29 +2179,13 @@ fn check_rectangle(
 ) -> Result<(), TestCaseError> {
     let pdf = spherical_rectangle_pdf(corner, ex, ey, p);
     let (w, pdf_w, st) = spherical_rectangle(u, corner, ex, ey, p);
-    prop_assert_eq!(pdf.to_bits(), pdf_w.to_bits());
-    prop_assert!(pdf.is_finite() && pdf >= 0.0, "pdf {}", pdf);
-    prop_assert!(w.is_finite() && st.is_finite(), "{} {}", w, st);
-    if pdf > 0.0 {
-        prop_assert!(
-            (w.length() - 1.0).abs() <= 2.0 * f32::EPSILON,
-            "|w| {}",
-            w.length()
-        );
+    let corners = rectangle_corners(corner, ex, ey);
+    let hits = || hits_polygon(w, &corners, p, RECTANGLE_HIT_SLACK);
+    if check_light_answer(pdf, pdf_w, w, hits)? {
         prop_assert!(
             st.min_element() >= 0.0 && st.max_element() <= 1.0,
             "st {}",
             st
-        );
-        prop_assert!(
-            hits_polygon(
-                w,
-                &rectangle_corners(corner, ex, ey),
-                p,
-                RECTANGLE_HIT_SLACK
-            ),
-            "{} misses",
-            w
         );
     } else {
         prop_assert_eq!(st, Vec2::splat(0.5));
@@ -2313,6 +2304,39 @@ fn monte_carlo_solid_angle(vertices: &[[f64; 3]], p: Vec3, seed: u64, count: usi
     )
 }
 
+/// [`light_pdfs_are_the_maps_density`]'s checks of one light (skipped
+/// outside solid angles of 0.02 to `2 pi - 0.1` sr).
+fn check_density(
+    vertices: &[[f64; 3]],
+    p: Vec3,
+    pdf: f32,
+    warp: impl Fn(Vec2) -> Vec3,
+    u: Vec2,
+    seed: u64,
+) -> Result<(), TestCaseError> {
+    let omega = polygon_solid_angle(vertices, p);
+    if !(0.02..2.0 * PI - 0.1).contains(&omega) {
+        return Ok(());
+    }
+    let pdf = f64::from(pdf);
+    prop_assert!(
+        (pdf * omega - 1.0).abs() < 1e-5,
+        "pdf {} omega {}",
+        pdf,
+        omega
+    );
+    let j = area_scale(warp, v3, u, 1.0 / 1024.0);
+    prop_assert!((j * pdf - 1.0).abs() < 0.03, "pdf |J| = {}", j * pdf);
+    let (mc, se) = monte_carlo_solid_angle(vertices, p, seed, 1 << 14);
+    prop_assert!(
+        (mc - omega).abs() < 5.0 * se + 1e-3,
+        "Monte Carlo {} vs {}",
+        mc,
+        omega
+    );
+    Ok(())
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(96))]
 
@@ -2331,30 +2355,15 @@ proptest! {
         seed in 0u64..1 << 32,
     ) {
         let at = |v: [f64; 3]| f32v(mul(scale, v));
-        let h = 1.0 / 1024.0;
         // A triangle light.
         let (ta, tb, tc, tp) = (at(a), at(add(a, e1)), at(add(a, e2)), at(p));
-        let vertices = [dv(ta), dv(tb), dv(tc)];
-        let omega = polygon_solid_angle(&vertices, tp);
-        if (0.02..2.0 * PI - 0.1).contains(&omega) {
-            let pdf = spherical_triangle_pdf(ta, tb, tc, tp);
-            prop_assert!((f64::from(pdf) * omega - 1.0).abs() < 1e-5, "pdf {} omega {}", pdf, omega);
-            let j = area_scale(|u| spherical_triangle(u, ta, tb, tc, tp).0, v3, u, h);
-            prop_assert!((j * f64::from(pdf) - 1.0).abs() < 0.03, "triangle pdf |J| = {}", j * f64::from(pdf));
-            let (mc, se) = monte_carlo_solid_angle(&vertices, tp, seed, 1 << 14);
-            prop_assert!((mc - omega).abs() < 5.0 * se + 1e-3, "Monte Carlo {} vs {}", mc, omega);
-        }
+        let pdf = spherical_triangle_pdf(ta, tb, tc, tp);
+        let warp = |u| spherical_triangle(u, ta, tb, tc, tp).0;
+        check_density(&[dv(ta), dv(tb), dv(tc)], tp, pdf, warp, u, seed)?;
         // A rectangle light on the same edges (their perpendicular part).
         let (corner, ex, ey) = (at(a), at(e1), at(e2));
-        let vertices = rectangle_corners(corner, ex, ey);
-        let omega = polygon_solid_angle(&vertices, tp);
-        if (0.02..2.0 * PI - 0.1).contains(&omega) {
-            let pdf = spherical_rectangle_pdf(corner, ex, ey, tp);
-            prop_assert!((f64::from(pdf) * omega - 1.0).abs() < 1e-5, "pdf {} omega {}", pdf, omega);
-            let j = area_scale(|u| spherical_rectangle(u, corner, ex, ey, tp).0, v3, u, h);
-            prop_assert!((j * f64::from(pdf) - 1.0).abs() < 0.03, "rectangle pdf |J| = {}", j * f64::from(pdf));
-            let (mc, se) = monte_carlo_solid_angle(&vertices, tp, seed ^ 1, 1 << 14);
-            prop_assert!((mc - omega).abs() < 5.0 * se + 1e-3, "Monte Carlo {} vs {}", mc, omega);
-        }
+        let pdf = spherical_rectangle_pdf(corner, ex, ey, tp);
+        let warp = |u| spherical_rectangle(u, corner, ex, ey, tp).0;
+        check_density(&rectangle_corners(corner, ex, ey), tp, pdf, warp, u, seed ^ 1)?;
     }
 }
