@@ -31,9 +31,18 @@
 //! run of nodes, the density sampled is the piecewise-linear interpolant of
 //! `|f1|` through them, inverted exactly (a quadratic per segment), and
 //! the weight is `f / pdf` of that density: unbiased, and within the
-//! bound each filter states of the constant `c` (at most 1.8% above it,
-//! for a Lanczos filter of radius 4; within 0.2% of it on at least 99.7%
-//! of the mass for every filter tested). The tabulated inverse CDFs are
+//! bound each filter states of the constant `c` for its usual parameters
+//! (at most 1.8% above it, for a Lanczos filter of radius 4 and `tau =
+//! 3`; within 0.2% of it on at least 99.7% of the mass for every filter
+//! tested). For every parameter a constructor accepts, the weights are
+//! finite, carry the sign of `f` and are at most `2 c`: next to a zero of
+//! a narrow lobe (4 table segments, as many lobes or two nearly
+//! coincident zeros give) the interpolated density falls short of `|f|`,
+//! by up to `4 / 3` for a lobe shaped like a parabola and 1.60 measured
+//! for Mitchell near `b = c = 0` (`tests/filter.rs` checks `2 c` over
+//! random parameters). A table counts as lobes the runs between the
+//! zeros of `f1` where it changes sign and its touching zeros (valleys of
+//! `|f1|`), and accepts at most 30. The tabulated inverse CDFs are
 //! within 2e-5 of the exact ones, so a point crosses into a neighbouring
 //! stratum only if it lies that close to the stratum's edge.
 //!
@@ -143,16 +152,27 @@ fn clamp_unit_f64(x: f32) -> f64 {
     f64::from(crate::warp::clamp_unit(x))
 }
 
-/// A filter parameter that must be finite and positive.
-fn positive(filter: &'static str, parameter: &'static str, value: f32) -> Result<f64, Error> {
-    if value.is_finite() && value > 0.0 {
+/// The smallest radius (and Gaussian sigma) a filter accepts, 2^-32
+/// (about 2.3e-10 pixels). The normalised filter's peak grows like `1 /
+/// radius` per axis and [`Filter::evaluate`] is its square in f32, which
+/// overflows below about 5e-20; 2^-32 leaves room for Mitchell's largest
+/// `b` and `c` ([`MITCHELL_MAX_BC`]).
+pub const MIN_FILTER_SCALE: f32 = 1.0 / 4_294_967_296.0;
+
+/// What [`Error::FilterParameter`] says a radius or sigma must be.
+const SCALE_RANGE: &str = "a finite number from 2^-32 (about 2.3e-10) to f32::MAX";
+
+/// A filter's length parameter (a radius or a sigma): finite and at least
+/// [`MIN_FILTER_SCALE`].
+fn scale(filter: &'static str, parameter: &'static str, value: f32) -> Result<f64, Error> {
+    if value.is_finite() && value >= MIN_FILTER_SCALE {
         Ok(f64::from(value))
     } else {
         Err(Error::FilterParameter {
             filter,
             parameter,
             value,
-            expected: "a finite number > 0",
+            expected: SCALE_RANGE,
         })
     }
 }
@@ -239,10 +259,11 @@ impl BoxFilter {
     ///
     /// # Errors
     ///
-    /// [`Error::FilterParameter`] unless `radius` is finite and positive.
+    /// [`Error::FilterParameter`] unless `radius` is finite and at least
+    /// [`MIN_FILTER_SCALE`] (2^-32).
     pub fn new(radius: f32) -> Result<Self, Error> {
         Ok(Self {
-            radius: positive("box", "radius", radius)?,
+            radius: scale("box", "radius", radius)?,
         })
     }
 
@@ -309,10 +330,11 @@ impl TentFilter {
     ///
     /// # Errors
     ///
-    /// [`Error::FilterParameter`] unless `radius` is finite and positive.
+    /// [`Error::FilterParameter`] unless `radius` is finite and at least
+    /// [`MIN_FILTER_SCALE`] (2^-32).
     pub fn new(radius: f32) -> Result<Self, Error> {
         Ok(Self {
-            radius: positive("tent", "radius", radius)?,
+            radius: scale("tent", "radius", radius)?,
         })
     }
 
@@ -414,10 +436,11 @@ impl GaussianFilter {
     ///
     /// # Errors
     ///
-    /// [`Error::FilterParameter`] unless both are finite and positive.
+    /// [`Error::FilterParameter`] unless both are finite and at least
+    /// [`MIN_FILTER_SCALE`] (2^-32).
     pub fn new(radius: f32, sigma: f32) -> Result<Self, Error> {
-        let radius = positive("gaussian", "radius", radius)?;
-        let sigma = positive("gaussian", "sigma", sigma)?;
+        let radius = scale("gaussian", "radius", radius)?;
+        let sigma = scale("gaussian", "sigma", sigma)?;
         let erf_radius = libm::erf(radius / (sigma * core::f64::consts::SQRT_2));
         Ok(Self {
             radius,
@@ -488,17 +511,30 @@ impl Table {
     /// The table of `f1` on `[0, radius]`, or `None` if `f1` has more than
     /// [`MAX_LOBES`] lobes there (found on a scan of 4096 points) or a
     /// non-positive integral.
+    ///
+    /// A lobe ends at every zero of `f1` where it changes sign and at
+    /// every valley of `|f1|` without one (a touching zero, as in
+    /// `sinc(x)^2`, or two zeros closer than the scan's step): a dip of
+    /// more than 1e-6 of the largest `|f1|` on the scan, placed at its
+    /// minimum. Counting sign changes alone let a filter of any number of
+    /// touching zeros through, with too few segments per lobe.
     fn new(radius: f64, f1: impl Fn(f64) -> f64) -> Option<Self> {
-        // The zeros of f1 inside (0, radius): sign changes on a scan,
-        // refined by bisection.
+        // The lobes' ends inside (0, radius), and whether each is a zero
+        // where f1 changes sign (a node of value 0 exactly).
         let mut ends = [0.0f64; MAX_LOBES + 1];
+        let mut sign_change = [false; MAX_LOBES + 1];
         let mut lobes = 0;
         const SCAN: usize = 4096;
         let at = |i: usize| radius * i as f64 / SCAN as f64;
+        let dip = 1e-6 * (0..=SCAN).map(|i| f1(at(i)).abs()).fold(0.0, f64::max);
         let mut previous = f1(0.0);
+        // Valleys of |f1|: falling from the last peak (tracking the lowest
+        // point) or rising from the last valley (tracking the highest).
+        let (mut falling, mut low, mut low_at, mut high) = (true, previous.abs(), 0, 0.0);
         for i in 1..SCAN {
             let value = f1(at(i));
-            if (previous < 0.0 && value > 0.0) || (previous > 0.0 && value < 0.0) {
+            let magnitude = value.abs();
+            let end = if (previous < 0.0 && value > 0.0) || (previous > 0.0 && value < 0.0) {
                 let (mut lo, mut hi) = (at(i - 1), at(i));
                 for _ in 0..60 {
                     let mid = 0.5 * (lo + hi);
@@ -508,11 +544,37 @@ impl Table {
                         hi = mid;
                     }
                 }
+                // The zero is the valley: rising from it.
+                (falling, high) = (false, magnitude);
+                Some((0.5 * (lo + hi), true))
+            } else if falling {
+                if magnitude < low {
+                    (low, low_at) = (magnitude, i);
+                    None
+                } else if magnitude > low + dip {
+                    (falling, high) = (false, magnitude);
+                    // The minimum of |f1| around the lowest scan point.
+                    (low_at > 0).then(|| (valley(&f1, at(low_at - 1), at(low_at + 1)), false))
+                } else {
+                    None
+                }
+            } else {
+                if magnitude > high {
+                    high = magnitude;
+                } else if magnitude < high - dip {
+                    (falling, low, low_at) = (true, magnitude, i);
+                }
+                None
+            };
+            if let Some((x, exact_zero)) = end
+                && x > ends[lobes]
+            {
                 lobes += 1;
                 if lobes >= MAX_LOBES {
                     return None;
                 }
-                ends[lobes] = 0.5 * (lo + hi);
+                ends[lobes] = x;
+                sign_change[lobes] = exact_zero;
             }
             if value != 0.0 {
                 previous = value;
@@ -544,7 +606,7 @@ impl Table {
                 let x = ends[j] + (ends[j + 1] - ends[j]) * k as f64 / counts[j] as f64;
                 table.x[node] = x as f32;
                 // A zero of f1 is a node of value 0 exactly.
-                table.value[node] = if k == 0 && j > 0 {
+                table.value[node] = if k == 0 && sign_change[j] {
                     0.0
                 } else {
                     f1(f64::from(table.x[node])).abs() as f32
@@ -660,6 +722,13 @@ pub fn mitchell_netravali(x: f64, b: f64, c: f64) -> f64 {
     value / 6.0
 }
 
+/// The largest `|b|` and `|c|` [`MitchellFilter::new`] accepts, 2^20: the
+/// cubic's values grow like `11 |b| + 48 |c|`, so its peak (and
+/// [`Filter::evaluate`], its square over `radius^2`) and the weights stay
+/// finite in f32 down to [`MIN_FILTER_SCALE`]. Mitchell and Netravali's
+/// filters have `b` and `c` in `[0, 1]`.
+pub const MITCHELL_MAX_BC: f32 = 1_048_576.0;
+
 /// The Mitchell-Netravali filter: the cubic with parameters `(B, C)` on
 /// `2 x / radius` per axis. `B = C = 1/3` is the authors' recommendation;
 /// `B = 0, C = 1/2` is Catmull-Rom.
@@ -673,7 +742,9 @@ pub fn mitchell_netravali(x: f64, b: f64, c: f64) -> f64 {
 ///   with the sign of `f`; its magnitude is within 0.2% of
 ///   [`weight_magnitude`](Filter::weight_magnitude) `c` on all but 0.02%
 ///   of the `|f|` mass at `B = C = 1/3` (0.05% for Catmull-Rom), and at
-///   most `1.0025 c` (`1.0062 c` for Catmull-Rom); it falls toward 0 only
+///   most `1.0025 c` (`1.0062 c` for Catmull-Rom; `1.047 c` at worst
+///   for `b`, `c` in `[-4, 4]`, and at most `2 c` for every accepted `b`
+///   and `c`, see the module docs); it falls toward 0 only
 ///   in the last table segment before a zero where `f` is flat
 ///   (`tests/filter.rs` measures these).
 /// - The inverse CDF is within 4e-6 of the exact one (in `|f|` mass).
@@ -717,17 +788,18 @@ impl MitchellFilter {
     ///
     /// # Errors
     ///
-    /// [`Error::FilterParameter`] unless `radius` is finite and positive
-    /// and `b` and `c` are finite with a filter of positive integral.
+    /// [`Error::FilterParameter`] unless `radius` is finite and at least
+    /// [`MIN_FILTER_SCALE`] (2^-32), and `b` and `c` are finite and at
+    /// most [`MITCHELL_MAX_BC`] (2^20) in magnitude.
     pub fn new(radius: f32, b: f32, c: f32) -> Result<Self, Error> {
-        let radius = positive("mitchell", "radius", radius)?;
+        let radius = scale("mitchell", "radius", radius)?;
         for (parameter, value) in [("b", b), ("c", c)] {
-            if !value.is_finite() {
+            if value.is_nan() || value.abs() > MITCHELL_MAX_BC {
                 return Err(Error::FilterParameter {
                     filter: "mitchell",
                     parameter,
                     value,
-                    expected: "a finite number (1/3 is Mitchell and Netravali's choice)",
+                    expected: "a number from -2^20 to 2^20 (1/3 is Mitchell and Netravali's choice)",
                 });
             }
         }
@@ -770,6 +842,22 @@ impl MitchellFilter {
 }
 separable!(MitchellFilter);
 
+/// The `x` in `[lo, hi]` where `|f1|` is least, by golden-section search
+/// (80 steps: to f64 resolution of the interval), for a lobe's end at a
+/// valley of `|f1|`.
+fn valley(f1: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
+    const SHORT: f64 = 0.381_966_011_250_105_1; // 1 - 1 / golden ratio
+    for _ in 0..80 {
+        let (a, b) = (lo + SHORT * (hi - lo), hi - SHORT * (hi - lo));
+        if f1(a).abs() < f1(b).abs() {
+            hi = b;
+        } else {
+            lo = a;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
 /// `sin(pi x) / (pi x)`, 1 at 0.
 #[inline]
 fn sinc(x: f64) -> f64 {
@@ -792,7 +880,11 @@ fn sinc(x: f64) -> f64 {
 ///   `f`; its magnitude is within 0.2% of
 ///   [`weight_magnitude`](Filter::weight_magnitude) `c` on all but 0.07%
 ///   of the `|f|` mass at `radius = tau = 3` (0.23% at `radius = 4, tau =
-///   3`), and at most `1.012 c` (`1.018 c`) (`tests/filter.rs`).
+///   3`), and at most `1.012 c` (`1.018 c`) (`tests/filter.rs`). With
+///   many lobes (`sinc^2` at radius 30: `1.045 c`) or a narrow one (two
+///   nearly coincident zeros, or a zero just inside the radius: up to
+///   `4/3 c` next to it) the bound is looser; at most `2 c` for every
+///   accepted radius and `tau`.
 /// - The inverse CDF is within 9e-6 (1.6e-5) of the exact one.
 ///
 /// # Cost
@@ -802,8 +894,13 @@ fn sinc(x: f64) -> f64 {
 ///
 /// # Limits
 ///
-/// At most 30 lobes on each side of the centre (a radius up to about 30):
-/// each lobe gets at least 4 of the table's 240 segments.
+/// At most 30 lobes on each side of the centre: each lobe gets at least 4
+/// of the table's 240 segments. The lobes end at the zeros of `sinc(x)`
+/// (the integers) and of `sinc(x / tau)` (the multiples of `tau`) inside
+/// the radius, touching ones included: with `tau = 1` (`sinc^2`, whose
+/// zeros touch 0 without a change of sign) as with any other `tau`, the
+/// radius is at most about 30 (less for `tau < 1`, whose window adds its
+/// own zeros).
 ///
 /// # Examples
 ///
@@ -834,16 +931,24 @@ impl LanczosFilter {
     ///
     /// # Errors
     ///
-    /// [`Error::FilterParameter`] unless both are finite and positive,
-    /// with at most 30 lobes inside the radius and a positive integral.
+    /// [`Error::FilterParameter`] unless both are finite and at least
+    /// [`MIN_FILTER_SCALE`] (2^-32), with at most 30 lobes inside the
+    /// radius (see Limits) and a positive integral.
     pub fn new(radius: f32, tau: f32) -> Result<Self, Error> {
-        let r = positive("lanczos", "radius", radius)?;
-        let t = positive("lanczos", "tau", tau)?;
-        let table = Table::new(r, |x| sinc(x) * sinc(x / t)).ok_or(Error::FilterParameter {
+        let r = scale("lanczos", "radius", radius)?;
+        let t = scale("lanczos", "tau", tau)?;
+        // Each of sinc(x) and sinc(x / tau) alone has a zero at every
+        // integer (multiple of tau) inside the radius: more than 29 of
+        // either is too many lobes, however narrow (the table's scan could
+        // not see them). Their union is counted by the scan.
+        let few_zeros = r <= MAX_LOBES as f64 && r <= MAX_LOBES as f64 * t;
+        let table = few_zeros.then(|| Table::new(r, |x| sinc(x) * sinc(x / t)));
+        let table = table.flatten().ok_or(Error::FilterParameter {
             filter: "lanczos",
             parameter: "radius",
             value: radius,
-            expected: "a radius of at most 30 lobes of the sinc (about 30), with a positive integral",
+            expected: "a radius with at most 30 lobes inside it (zeros of sinc(x) and sinc(x / tau), \
+                       touching ones too: a radius up to about 30 for tau >= 1), with a positive integral",
         })?;
         Ok(Self {
             radius: r,
@@ -926,14 +1031,15 @@ impl BlackmanHarrisFilter {
     ///
     /// # Errors
     ///
-    /// [`Error::FilterParameter`] unless `radius` is finite and positive.
+    /// [`Error::FilterParameter`] unless `radius` is finite and at least
+    /// [`MIN_FILTER_SCALE`] (2^-32).
     pub fn new(radius: f32) -> Result<Self, Error> {
-        let r = positive("blackman-harris", "radius", radius)?;
+        let r = scale("blackman-harris", "radius", radius)?;
         let table = Table::new(r, |x| blackman_harris_1d(x, r)).ok_or(Error::FilterParameter {
             filter: "blackman-harris",
             parameter: "radius",
             value: radius,
-            expected: "a finite number > 0",
+            expected: SCALE_RANGE,
         })?;
         Ok(Self { radius: r, table })
     }

@@ -958,8 +958,12 @@ pub fn rectangle(u: Vec2, corner: Vec3, ex: Vec3, ey: Vec3) -> Vec3 {
 }
 
 /// The density of [`rectangle`]'s point with respect to area, `1 / |ex x
-/// ey|`. A degenerate parallelogram (parallel or zero edges) gives
-/// `+inf`, as [`uniform_triangle_pdf`] does for a triangle of area 0.
+/// ey|`, computed in f64 and rounded once, so it is right for every f32
+/// edge (in f32, `|ex x ey|^2` overflows from edges of about 1e10 and
+/// underflows below about 1e-10). A degenerate parallelogram (parallel or
+/// zero edges), or one of area below about 3e-39 (where `1 / area`
+/// overflows f32), gives `+inf`, as [`uniform_triangle_pdf`] does for a
+/// triangle of area 0.
 ///
 /// ```
 /// use wellspread::warp::rectangle_pdf;
@@ -969,7 +973,7 @@ pub fn rectangle(u: Vec2, corner: Vec3, ex: Vec3, ey: Vec3) -> Vec3 {
 /// ```
 #[inline]
 pub fn rectangle_pdf(ex: Vec3, ey: Vec3) -> f32 {
-    1.0 / ex.cross(ey).length()
+    (1.0 / ex.as_dvec3().cross(ey.as_dvec3()).length()) as f32
 }
 
 /// The inverse of [`rectangle`]: the `(s, t)` of a point of the
@@ -1031,9 +1035,67 @@ fn perpendicular(v: DVec3, axis: DVec3) -> DVec3 {
     (v - v.dot(axis) * axis).normalize_or_zero()
 }
 
+/// How far from a planar light's plane a shading point must be, relative
+/// to its distance from the light's farthest vertex, to see the light at
+/// all: 2^-20, sixteen roundings of an f32 coordinate (2^-24). Nearer the
+/// plane (on the light, on an edge or a vertex, or in the plane outside
+/// it, up to that margin) the light's solid angle is decided by the
+/// rounding of the point's coordinates, and the edges' directions from the
+/// point are too nearly opposite to be computed: the light warps return
+/// pdf 0. At 2^-24 the triangle map's directions still missed the light
+/// by more than 1e-6 rad for points just off the plane (`tests/warp.rs`'s
+/// property tests found them); at 2^-20 none of their cases does.
+const IN_PLANE: f64 = 1.0 / 1_048_576.0;
+
+/// The thinnest spherical triangle or rectangle the light warps sample:
+/// its solid angle at least 2^-20 of its longest side's squared chord.
+/// The maps place the direction through the angles at the corners and the
+/// arcs between them, which lose their digits in f64 for a needle (a thin
+/// light seen at a grazing angle, or a short edge far from the others, as
+/// seen from `p`); such a light is sampled as degenerate, pdf 0, as one in
+/// its plane is.
+const NEEDLE: f64 = 1.0 / 1_048_576.0;
+
+/// Whether a shading point sees a planar light off its plane: `to_light`
+/// is from the point to a point of the light, `normal` the light's normal
+/// (any length; zero for a degenerate light), `reach` the point's
+/// distance to the light's farthest vertex (or a bound of it within a
+/// small factor). False in the plane up to [`IN_PLANE`], for a zero normal
+/// and for NaN. The one place the triangle and rectangle lights decide
+/// that a point is in their plane, for their sample and pdf alike.
+///
+/// It also refuses a light thinner than [`SLIVER`]: `longest` is its
+/// longest side, and `|normal| <= SLIVER longest^2` (twice the area of a
+/// triangle, the area of a rectangle) is a needle or a sliver, or a
+/// degenerate light that f32 rounding made a sliver of, whose plane the
+/// coordinates do not fix.
+///
+/// The two conditions compound (a sliver seen from near its plane and
+/// its line): their product must pass [`SLIVER_IN_PLANE`] too.
+#[inline]
+fn sees_plane(to_light: DVec3, normal: DVec3, reach: f64, longest: f64) -> bool {
+    let area = normal.length();
+    let off = to_light.dot(normal).abs() / (area * reach);
+    let thin = area / (longest * longest);
+    off > IN_PLANE && thin > SLIVER && off * thin > SLIVER_IN_PLANE
+}
+
+/// The least product of a light's thinness (area over longest side
+/// squared) and the point's height over its plane (over its distance),
+/// 2^-30: their f64 errors multiply, and below it the triangle map's
+/// directions missed the light by more than 1e-6 rad (`tests/warp.rs`'s
+/// property tests found a sliver of 1.5e-6 seen from 1.1e-6 above its
+/// plane missing by 2e-5 rad).
+const SLIVER_IN_PLANE: f64 = 1.0 / 1_073_741_824.0;
+
+/// The thinnest planar light the light warps sample: its area at least
+/// 2^-20 of its longest side squared (a 1 mm wide strip may be 1 km long).
+const SLIVER: f64 = 1.0 / 1_048_576.0;
+
 /// The spherical triangle of a light triangle seen from a point: the unit
 /// directions to its vertices and its solid angle, or `None` when that is
-/// 0 (the point is in the triangle's plane or on a vertex) or not finite.
+/// 0 (the point is in the triangle's plane, up to [`IN_PLANE`], which
+/// takes in its edges and vertices) or not finite.
 struct SphericalTriangle {
     a: DVec3,
     b: DVec3,
@@ -1045,14 +1107,20 @@ impl SphericalTriangle {
     #[inline]
     fn new(a: Vec3, b: Vec3, c: Vec3, p: Vec3) -> Option<Self> {
         let p = p.as_dvec3();
-        let (a, b, c) = (
-            (a.as_dvec3() - p).normalize_or_zero(),
-            (b.as_dvec3() - p).normalize_or_zero(),
-            (c.as_dvec3() - p).normalize_or_zero(),
-        );
+        let (a, b, c) = (a.as_dvec3() - p, b.as_dvec3() - p, c.as_dvec3() - p);
+        let reach = a.length().max(b.length()).max(c.length());
+        let longest = (b - a).length().max((c - b).length()).max((a - c).length());
+        if !sees_plane(a, (b - a).cross(c - a), reach, longest) {
+            return None;
+        }
+        let (a, b, c) = (a.normalize(), b.normalize(), c.normalize());
         let area = spherical_triangle_area(a, b, c);
-        (solid_angle_pdf(area) > 0.0 && a != DVec3::ZERO && b != DVec3::ZERO && c != DVec3::ZERO)
-            .then_some(Self { a, b, c, area })
+        // A needle as seen from p: too thin for Arvo's map in f64.
+        let longest = (a - b)
+            .length_squared()
+            .max((b - c).length_squared())
+            .max((c - a).length_squared());
+        (solid_angle_pdf(area) > 0.0 && area >= NEEDLE * longest).then_some(Self { a, b, c, area })
     }
 }
 
@@ -1095,11 +1163,24 @@ fn degenerate_triangle(a: Vec3, b: Vec3, c: Vec3, p: Vec3) -> (Vec3, f32, Vec3) 
 ///   unit length, the barycentrics are `>= 0` and sum to 1 within 2^-23.
 ///   For every `u` of `[0, 1)^2` the pdf is the same positive finite value
 ///   (the 2^-24 edge grid is tested).
-/// - A triangle of no solid angle from `p` (`p` in its plane or on a
-///   vertex, or a solid angle below about 3e-39 sr, where `1 / omega`
-///   overflows f32) has no direction to give: the result is the direction
-///   to the centroid with pdf 0, which a renderer skips (or samples the
-///   triangle by area). The vertex order does not matter.
+/// - A triangle of no solid angle from `p` (`p` in its plane, which takes
+///   in its edges and vertices, a degenerate triangle, or a solid angle
+///   below about 3e-39 sr, where `1 / omega` overflows f32) has no
+///   direction to give: the result is the direction to the centroid with
+///   pdf 0, which a renderer skips (or samples the triangle by area).
+///   [`spherical_triangle_pdf`] decides it in the same place and returns 0
+///   too. "In the plane" is up to a few f32 roundings: a `p` within 2^-20
+///   of its distance to the farthest vertex from the plane counts as in
+///   it (its f32 coordinates barely say on which side it is). So is a sliver
+///   (area below 2^-20 of the longest side squared) and a needle as seen
+///   from `p` (solid angle below 2^-20 of the longest side's squared
+///   chord), where Arvo's map loses its digits in f64, and a thin light
+///   seen from near its plane (the product of its area over its longest
+///   side squared and `p`'s relative height below 2^-30). Otherwise the
+///   direction is finite and within the triangle as seen from `p` up to
+///   its f32 rounding (`tests/warp.rs` checks 1e-6 rad over random,
+///   degenerate and edge geometry at scales 1e-6 to 1e18). The vertex
+///   order does not matter.
 /// - Input `u` outside `[0, 1)^2` is clamped into it (NaN to 0).
 ///
 /// # Cost
@@ -1443,13 +1524,26 @@ impl SphericalRectangleF32 {
     /// nearly opposite ([`RECTANGLE_F32_MIN_MODULUS2`]).
     #[inline]
     fn new(corner: Vec3, ex: Vec3, ey: Vec3, p: Vec3) -> Option<Self> {
-        let ex_len = ex.length();
-        let x = ex / ex_len;
-        let ey = ey - ey.dot(x) * x;
-        let ey_len = ey.length();
-        let y = ey / ey_len;
-        let mut z = x.cross(y);
+        // The solid angle and the map do not change with the scale: scale
+        // the lengths by a power of two (exact) so that the largest
+        // coordinate is in [1/2, 1), and no square or product below
+        // overflows or underflows, whatever the rectangle's size.
         let d = corner - p;
+        let largest = d.abs().max(ex.abs()).max(ey.abs()).max_element();
+        if !(largest.is_finite() && largest >= f32::MIN_POSITIVE) {
+            return None;
+        }
+        let scale = libm::scalbnf(1.0, -libm::frexpf(largest).1);
+        let (d, ex, ey) = (d * scale, ex * scale, ey * scale);
+        // The frame in f64, rounded once: the part of ey perpendicular to
+        // ex cancels in f32 when the two are nearly parallel.
+        let (exd, eyd) = (ex.as_dvec3(), ey.as_dvec3());
+        let xd = exd / exd.length();
+        let eyd = eyd - eyd.dot(xd) * xd;
+        let yd = eyd / eyd.length();
+        let (ex_len, ey_len) = (exd.length() as f32, eyd.length() as f32);
+        let (x, y) = (xd.as_vec3(), yd.as_vec3());
+        let mut z = xd.cross(yd).as_vec3();
         let (x0, y0) = (d.dot(x), d.dot(y));
         let mut z0 = d.dot(z);
         if z0 > 0.0 {
@@ -1503,6 +1597,8 @@ impl SphericalRectangleF32 {
             // sees the edges y = y0 and y = y1 over the plane.
             && z2 >= RECTANGLE_F32_MIN_GRAZING * (yy0 + z2)
             && z2 >= RECTANGLE_F32_MIN_GRAZING * (yy1 + z2)
+            // Every intermediate that could overflow or divide by 0.
+            && (det + d1 + d2 + det1 + det2 + im).is_finite()
             && (c2 + c3 + s2 + s3).is_finite()
             && (x + y + d).is_finite();
         fine.then(|| Self {
@@ -1583,9 +1679,17 @@ impl SphericalRectangleF32 {
 /// - `ex` and `ey` should be perpendicular (a rectangle). For a
 ///   parallelogram, the part of `ey` perpendicular to `ex` is used: the
 ///   directions cover the rectangle spanned by `ex` and that part.
-/// - A rectangle of no solid angle from `p` (`p` in its plane, a zero
-///   edge, or below about 3e-39 sr) gives the direction to its centre with
-///   pdf 0 and `(s, t) = (0.5, 0.5)`.
+/// - A rectangle of no solid angle from `p` (`p` in its plane, which
+///   takes in its edges and corners, a zero edge, or below about 3e-39
+///   sr) gives the direction to its centre with pdf 0 and `(s, t) = (0.5,
+///   0.5)`; [`spherical_rectangle_pdf`] decides it in the same place and
+///   returns 0 too. "In the plane" is up to a few f32 roundings, as for
+///   [`spherical_triangle`]: within 2^-20 of `p`'s distance to the
+///   farthest corner (bounded by `|corner - p| + |ex| + |ey|`). So are
+///   slivers and needles, as for [`spherical_triangle`]. Otherwise the
+///   direction is finite and within the rectangle as seen from `p` within
+///   1e-4 rad (the f32 evaluation's accuracy; `tests/warp.rs` checks it
+///   over random, degenerate and edge geometry at scales 1e-6 to 1e18).
 /// - Input `u` outside `[0, 1)^2` is clamped into it (NaN to 0).
 ///
 /// # Cost
@@ -1601,6 +1705,12 @@ impl SphericalRectangleF32 {
 /// shading point; it is recomputed per call to keep the function pure.
 ///
 /// # Limits
+///
+/// Both evaluations work at any scale f32 holds (coordinates from about
+/// 1e-38 to 3e38): the f32 one first scales the lengths by a power of two
+/// (exact, so its values do not change) to bring the largest coordinate
+/// to `[1/2, 1)`, and hands over to the f64 one if any intermediate is
+/// not finite.
 ///
 /// The f32 evaluation is used where the rectangle covers at least 2^-10
 /// sr (about 1e-3), is seen at more than about 2.6 degrees above its
@@ -1653,14 +1763,14 @@ pub fn spherical_rectangle(
     p: Vec3,
 ) -> (Vec3, f32, Vec2) {
     let u = clamp_unit2(u);
-    if let Some(r) = SphericalRectangleF32::new(corner, ex, ey, p) {
-        return r.sample(u);
+    match RectangleLight::new(corner, ex, ey, p) {
+        RectangleLight::F32(r) => r.sample(u),
+        RectangleLight::F64(r) => r.sample(u),
+        RectangleLight::Degenerate => {
+            let centre = corner + 0.5 * (ex + ey);
+            ((centre - p).normalize_or(Vec3::Z), 0.0, Vec2::splat(0.5))
+        }
     }
-    let Some(r) = SphericalRectangle::new(corner, ex, ey, p) else {
-        let centre = corner + 0.5 * (ex + ey);
-        return ((centre - p).normalize_or(Vec3::Z), 0.0, Vec2::splat(0.5));
-    };
-    r.sample(u)
 }
 
 /// The density of [`spherical_rectangle`] with respect to solid angle, `1
@@ -1678,9 +1788,61 @@ pub fn spherical_rectangle(
 /// ```
 #[inline]
 pub fn spherical_rectangle_pdf(corner: Vec3, ex: Vec3, ey: Vec3, p: Vec3) -> f32 {
-    match SphericalRectangleF32::new(corner, ex, ey, p) {
-        Some(r) => 1.0 / r.area,
-        None => SphericalRectangle::new(corner, ex, ey, p).map_or(0.0, |r| solid_angle_pdf(r.area)),
+    match RectangleLight::new(corner, ex, ey, p) {
+        RectangleLight::F32(r) => 1.0 / r.area,
+        RectangleLight::F64(r) => solid_angle_pdf(r.area),
+        RectangleLight::Degenerate => 0.0,
+    }
+}
+
+/// A rectangle light seen from a point, as [`spherical_rectangle`] and
+/// [`spherical_rectangle_pdf`] both evaluate it: decided in this one place.
+enum RectangleLight {
+    /// The f32 evaluation, where it is accurate.
+    F32(SphericalRectangleF32),
+    /// The f64 evaluation elsewhere.
+    F64(SphericalRectangle),
+    /// No solid angle: the point in the rectangle's plane (up to
+    /// [`IN_PLANE`], which takes in its edges and corners), a zero edge,
+    /// a solid angle whose inverse is not a finite f32, or non-finite
+    /// input.
+    Degenerate,
+}
+
+impl RectangleLight {
+    #[inline]
+    fn new(corner: Vec3, ex: Vec3, ey: Vec3, p: Vec3) -> Self {
+        let (d, dx, dy) = (
+            corner.as_dvec3() - p.as_dvec3(),
+            ex.as_dvec3(),
+            ey.as_dvec3(),
+        );
+        let (lx, ly) = (dx.length(), dy.length());
+        if !sees_plane(d, dx.cross(dy), d.length() + lx + ly, lx.max(ly)) {
+            return Self::Degenerate;
+        }
+        let light = if let Some(r) = SphericalRectangleF32::new(corner, ex, ey, p) {
+            Self::F32(r)
+        } else {
+            SphericalRectangle::new(corner, ex, ey, p).map_or(Self::Degenerate, Self::F64)
+        };
+        // A needle as seen from p (see NEEDLE): the diagonals' squared
+        // chords bound the longest side's.
+        let area = match &light {
+            Self::F32(r) => f64::from(r.area),
+            Self::F64(r) => r.area,
+            Self::Degenerate => return light,
+        };
+        let (c00, c11) = (d.normalize(), (d + dx + dy).normalize());
+        let (c10, c01) = ((d + dx).normalize(), (d + dy).normalize());
+        let longest = (c00 - c11)
+            .length_squared()
+            .max((c10 - c01).length_squared());
+        if area >= NEEDLE * longest {
+            light
+        } else {
+            Self::Degenerate
+        }
     }
 }
 

@@ -6,6 +6,7 @@
 //!
 //! Run with `--nocapture` to see the measured figures.
 
+use proptest::prelude::*;
 use rand::{Rng, SeedableRng};
 use rand_pcg::Pcg32;
 use wellspread::filter::*;
@@ -484,7 +485,7 @@ fn filters_reject_bad_parameters() {
     let message = BoxFilter::new(0.0).unwrap_err().to_string();
     assert_eq!(
         message,
-        "the box filter cannot use radius = 0; give a finite number > 0"
+        "the box filter cannot use radius = 0; give a finite number from 2^-32 (about 2.3e-10) to f32::MAX"
     );
     let message = LanczosFilter::new(100.0, 3.0).unwrap_err().to_string();
     assert!(message.contains("at most 30 lobes"), "{message}");
@@ -530,5 +531,219 @@ fn evaluate_1d_is_the_normalised_profile() {
             );
         }
         assert_eq!(case.filter.evaluate_1d(r * 1.01), 0.0, "{}", case.name);
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Every accepted parameter, and the range refused.
+
+/// `integral of evaluate_1d` over `[-extent, extent]` by 3-point
+/// Gauss-Legendre on 4096 panels (exact for the box and tent up to the
+/// panel holding their ends; the lobes of the others are at least 1/150
+/// of the extent wide).
+fn integral_1d(filter: &dyn Filter, extent: f64) -> f64 {
+    let panels = 4096;
+    let h = 2.0 * extent / panels as f64;
+    let (t, w) = ((0.6f64).sqrt(), [5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0]);
+    (0..panels)
+        .map(|k| {
+            let mid = -extent + (k as f64 + 0.5) * h;
+            0.5 * h
+                * (w[0] * filter.evaluate_1d(mid - 0.5 * h * t)
+                    + w[1] * filter.evaluate_1d(mid)
+                    + w[2] * filter.evaluate_1d(mid + 0.5 * h * t))
+        })
+        .sum()
+}
+
+/// The largest `|weight| / weight_magnitude()` over 2048 `u.x` (and `u.y`
+/// = 1/2, a table node), with the checks every sample must pass: a finite
+/// offset in the support, a finite weight with the sign of `evaluate`,
+/// and a finite `evaluate`.
+fn worst_weight(filter: &dyn Filter) -> Result<f64, String> {
+    let c = f64::from(filter.weight_magnitude());
+    // 1 for a positive filter up to the table's interpolation error.
+    if !(c.is_finite() && c >= 1.0 - 1e-4) {
+        return Err(format!("weight_magnitude {c}"));
+    }
+    let r = filter.radius();
+    let mut worst = 0.0f64;
+    let samples: Vec<(f32, FilterSample, f32)> = (0..2048)
+        .map(|k| {
+            let t = if k == 2047 { LAST } else { k as f32 / 2047.0 };
+            let s = filter.sample(Vec2::new(t, 0.5));
+            (t, s, filter.evaluate(s.offset))
+        })
+        .collect();
+    // At a zero of f the f32 offset and the f64 point the weight was
+    // computed at may round to opposite signs: only |f| above 1e-6 of the
+    // largest is held to the weight's sign.
+    let largest = samples.iter().map(|s| s.2.abs()).fold(0.0f32, f32::max);
+    for &(t, s, f) in &samples {
+        if !(s.offset.is_finite() && s.offset.abs().max_element() <= r) {
+            return Err(format!("u.x {t}: offset {}", s.offset));
+        }
+        let sign_ok = f64::from(s.weight) * f64::from(f) >= 0.0 || f.abs() <= 1e-6 * largest;
+        if !(s.weight.is_finite() && f.is_finite() && sign_ok) {
+            return Err(format!("u.x {t}: weight {}, evaluate {f}", s.weight));
+        }
+        worst = worst.max(f64::from(s.weight.abs()) / c);
+    }
+    let peak = filter.evaluate(Vec2::ZERO);
+    if !peak.is_finite() {
+        return Err(format!("evaluate(0) = {peak}"));
+    }
+    Ok(worst)
+}
+
+/// The bound Blackman-Harris's weights keep, `|weight| <= (1 +
+/// WEIGHT_SLACK) weight_magnitude()` (its docs: at most 1.00002).
+const WEIGHT_SLACK: f64 = 0.018;
+
+/// The bound every accepted Mitchell and Lanczos filter keeps (the module
+/// docs): `|weight| <= 2 c`. Next to a zero of a narrow lobe (4 table
+/// segments) the interpolated pdf falls short of `f`: up to `4 / 3` for a
+/// lobe shaped like a parabola, 1.60 measured for Mitchell near `b = c =
+/// 0` (a lobe of 1e-6 of the peak beside a double zero).
+const ANY_WEIGHT_SLACK: f64 = 1.0;
+
+/// A filter length (radius or sigma) from the accepted range, log-uniform
+/// over its exponents, and its edges.
+fn accepted_scale() -> impl Strategy<Value = f32> {
+    prop_oneof![
+        (-32i32..=127, 1.0f32..2.0).prop_map(|(e, m)| (m * 2f32.powi(e)).min(f32::MAX)),
+        Just(MIN_FILTER_SCALE),
+        Just(f32::MAX),
+        (0.25f32..4.0),
+    ]
+}
+
+fn check_accepted(filter: &dyn Filter, extent: f64, slack: f64) -> Result<f64, TestCaseError> {
+    let worst = worst_weight(filter).map_err(TestCaseError::fail)?;
+    prop_assert!(worst <= 1.0 + slack, "|weight| / c = {}", worst);
+    let integral = integral_1d(filter, extent);
+    prop_assert!(
+        (integral - 1.0).abs() < 0.01,
+        "integral of evaluate_1d {}",
+        integral
+    );
+    Ok(worst)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+
+    /// Box, tent and Blackman-Harris over their whole radius range.
+    #[test]
+    fn every_accepted_radius_gives_a_good_filter(radius in accepted_scale()) {
+        let r = f64::from(radius);
+        check_accepted(&BoxFilter::new(radius).unwrap(), r, 0.0)?;
+        check_accepted(&TentFilter::new(radius).unwrap(), r, 0.0)?;
+        check_accepted(&BlackmanHarrisFilter::new(radius).unwrap(), r, WEIGHT_SLACK)?;
+    }
+
+    /// The Gaussian over both ranges (its mass beyond 40 sigma is below
+    /// 1e-300, so the integral stops there).
+    #[test]
+    fn every_accepted_gaussian_is_a_good_filter(radius in accepted_scale(), sigma in accepted_scale()) {
+        let g = GaussianFilter::new(radius, sigma).unwrap();
+        check_accepted(&g, f64::from(radius).min(40.0 * f64::from(sigma)), 0.0)?;
+    }
+
+    /// Mitchell over its radius range and `|b|, |c| <= 2^20`.
+    #[test]
+    fn every_accepted_mitchell_is_a_good_filter(
+        radius in accepted_scale(),
+        b in prop_oneof![-MITCHELL_MAX_BC..=MITCHELL_MAX_BC, -2.0f32..2.0, Just(MITCHELL_MAX_BC), Just(0.0)],
+        c in prop_oneof![-MITCHELL_MAX_BC..=MITCHELL_MAX_BC, -2.0f32..2.0, Just(-MITCHELL_MAX_BC), Just(0.5)],
+    ) {
+        match MitchellFilter::new(radius, b, c) {
+            Ok(m) => { check_accepted(&m, f64::from(radius), ANY_WEIGHT_SLACK)?; }
+            Err(Error::FilterParameter { parameter: "b", .. }) => {}
+            Err(e) => prop_assert!(false, "{}", e),
+        }
+    }
+
+    /// Lanczos wherever the constructor accepts it (and the refusal says
+    /// the lobe limit): radii to 40, windows from 2^-32 up, `tau = 1`
+    /// (touching zeros) and next to it.
+    #[test]
+    fn every_accepted_lanczos_is_a_good_filter(
+        radius in prop_oneof![(0.25f32..40.0), (1u32..=40).prop_map(|k| k as f32), accepted_scale()],
+        tau in prop_oneof![Just(1.0f32), Just(1.0 + 1e-6), Just(1.0 - 1e-6), (0.05f32..8.0), accepted_scale()],
+    ) {
+        match LanczosFilter::new(radius, tau) {
+            Ok(l) => {
+                check_accepted(&l, f64::from(radius), ANY_WEIGHT_SLACK)?;
+            }
+            Err(e @ Error::FilterParameter { parameter: "radius", .. }) => {
+                prop_assert!(e.to_string().contains("at most 30 lobes"), "{}", e);
+            }
+            Err(e) => prop_assert!(false, "{}", e),
+        }
+    }
+
+    /// Below the range, and non-finite: an error that states the range.
+    #[test]
+    fn scales_below_the_range_are_refused_with_the_range(
+        tiny in prop_oneof![Just(0.0f32), Just(-0.0), (-60i32..-32).prop_map(|e| 1.5 * 2f32.powi(e)), Just(f32::MIN_POSITIVE), Just(-1.0), Just(f32::NAN), Just(f32::INFINITY)],
+    ) {
+        let refusals = [
+            BoxFilter::new(tiny).map(|_| ()),
+            TentFilter::new(tiny).map(|_| ()),
+            GaussianFilter::new(tiny, 0.5).map(|_| ()),
+            GaussianFilter::new(1.5, tiny).map(|_| ()),
+            MitchellFilter::new(tiny, 1.0 / 3.0, 1.0 / 3.0).map(|_| ()),
+            LanczosFilter::new(tiny, 3.0).map(|_| ()),
+            LanczosFilter::new(3.0, tiny).map(|_| ()),
+            BlackmanHarrisFilter::new(tiny).map(|_| ()),
+        ];
+        for refusal in refusals {
+            match refusal {
+                Err(e @ Error::FilterParameter { .. }) => {
+                    prop_assert!(e.to_string().contains("from 2^-32 (about 2.3e-10) to f32::MAX"), "{}", e);
+                }
+                other => prop_assert!(false, "{}: {:?}", tiny, other),
+            }
+        }
+    }
+}
+
+/// The case: `sinc^2` (`tau = 1`) has touching zeros, which are
+/// lobes: radius 31 and up is refused (the 1D integral was 4.14 at 4096,
+/// the weights infinite at 1e30, and 1.2-1.59 times `weight_magnitude()`
+/// at 64-100); radius 30 is accepted and keeps the bound.
+#[test]
+fn lanczos_counts_touching_zeros_as_lobes() {
+    for radius in [31.0, 64.0, 100.0, 4096.0, 1e30] {
+        let e = LanczosFilter::new(radius, 1.0).unwrap_err();
+        assert!(e.to_string().contains("at most 30 lobes"), "{radius}: {e}");
+    }
+    for tau in [1.0 + 1e-6, 1.0 - 1e-6] {
+        assert!(LanczosFilter::new(64.0, tau).is_err(), "tau {tau}");
+    }
+    let l = LanczosFilter::new(30.0, 1.0).unwrap();
+    let worst = worst_weight(&l).unwrap();
+    println!("lanczos(30, 1): |weight| / c <= {worst:.5}");
+    assert!(worst <= 1.05, "{worst}");
+    assert!((integral_1d(&l, 30.0) - 1.0).abs() < 1e-3);
+}
+
+/// The case: a radius or sigma of 1e-20 gave `evaluate = +inf`;
+/// it is refused, and the smallest accepted one evaluates finitely.
+#[test]
+fn filters_refuse_scales_that_overflow_evaluate() {
+    assert!(BoxFilter::new(1e-20).is_err() && TentFilter::new(5e-20).is_err());
+    assert!(
+        GaussianFilter::new(1.5, 1e-20).is_err() && MitchellFilter::new(1e-20, 0.3, 0.3).is_err()
+    );
+    let filters: [Box<dyn Filter>; 4] = [
+        Box::new(BoxFilter::new(MIN_FILTER_SCALE).unwrap()),
+        Box::new(TentFilter::new(MIN_FILTER_SCALE).unwrap()),
+        Box::new(GaussianFilter::new(1.5, MIN_FILTER_SCALE).unwrap()),
+        Box::new(MitchellFilter::new(MIN_FILTER_SCALE, MITCHELL_MAX_BC, -MITCHELL_MAX_BC).unwrap()),
+    ];
+    for f in &filters {
+        assert!(f.evaluate(Vec2::ZERO).is_finite() && f.evaluate(Vec2::ZERO) > 0.0);
     }
 }
