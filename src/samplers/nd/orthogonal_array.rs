@@ -452,33 +452,52 @@ impl OrthogonalArray {
             .stratum_to_unit_f32(level * self.sub.get() + sub, bits)
     }
 
-    /// [`sample`](SamplerNd::sample) for the multi-jittered offsets with
-    /// partners (`t <= q + 1`): each group of `t` dimensions evaluates its
-    /// `t` columns once and shares the raw levels among its members, so
-    /// the values are those of [`coordinate_of`](Self::coordinate_of)
-    /// with a `t`-th of its evaluations.
+    /// Coordinates `first ..` (within `dimensions()`) for the
+    /// multi-jittered offsets with partners (`t <= q + 1`): each group of
+    /// `t` dimensions evaluates its `t` columns once and shares the raw
+    /// levels among its members, so the values are those of
+    /// [`coordinate_of`](Self::coordinate_of) with a `t`-th of its
+    /// evaluations.
     #[inline(always)]
-    fn sample_by_groups(&self, index: u32, row: u32, pattern: &ArrayPattern, out: &mut [f32]) {
+    fn coordinates_by_groups(
+        &self,
+        index: u32,
+        row: u32,
+        pattern: &ArrayPattern,
+        first: u32,
+        out: &mut [f32],
+    ) {
         let (q, t) = (self.q.get(), self.strength());
-        for (group, chunk) in (0..).zip(out.chunks_mut(t as usize)) {
-            let base = group * t;
-            let mut levels = [0; 4];
-            for (k, level) in (0..t).zip(levels.iter_mut()) {
-                let column = pattern.columns.apply((base + k) % (q + 1));
-                *level = self.raw_level(row, column);
+        let (mut group, mut levels) = (u32::MAX, [0; 4]);
+        for (dimension, x) in (first..).zip(out.iter_mut()) {
+            let base = dimension - dimension % t;
+            if base != group {
+                group = base;
+                for (k, level) in (0..t).zip(levels.iter_mut()) {
+                    let column = pattern.columns.apply((base + k) % (q + 1));
+                    *level = self.raw_level(row, column);
+                }
             }
-            for (k, x) in (0..).zip(chunk.iter_mut()) {
-                // The partners in `sub_index`'s order: the group's other
-                // members, lowest first.
-                let sub_index = || {
-                    (0..t)
-                        .filter(|&j| j != k)
-                        .fold(0, |index, j| index * q + levels[j as usize])
-                };
-                let key = dimension_key(pattern.hash, base + k);
-                *x = self.place(index, key, levels[k as usize], sub_index);
-            }
+            let k = dimension - base;
+            // The partners in `sub_index`'s order: the group's other
+            // members, lowest first.
+            let sub_index = || {
+                (0..t)
+                    .filter(|&j| j != k)
+                    .fold(0, |index, j| index * q + levels[j as usize])
+            };
+            let key = dimension_key(pattern.hash, dimension);
+            *x = self.place(index, key, levels[k as usize], sub_index);
         }
+    }
+
+    /// Whether [`coordinates_by_groups`](Self::coordinates_by_groups)
+    /// serves coordinates `first .. first + len`.
+    #[inline(always)]
+    fn by_groups(&self, first: u32, len: usize) -> bool {
+        self.offset != OrthogonalArrayOffset::Jittered
+            && self.strength() <= self.q.get() + 1
+            && u64::from(first) + len as u64 <= u64::from(self.dimensions)
     }
 }
 
@@ -506,11 +525,16 @@ impl SamplerNd for OrthogonalArray {
         self.coordinate_of(index, pattern.rows.apply(index), &pattern, dimension)
     }
 
-    /// The pattern's row order and column choice once for all of `out`.
+    /// The pattern's row order and column choice once for all of `out`,
+    /// and each group's raw levels once (see `sample`).
     #[inline]
     fn coordinates(&self, index: u32, pattern: u32, first: u32, out: &mut [f32]) {
         let (index, pattern) = (reduce_index(index, self.n), self.prepare(pattern));
         let row = pattern.rows.apply(index);
+        if self.by_groups(first, out.len()) {
+            self.coordinates_by_groups(index, row, &pattern, first, out);
+            return;
+        }
         for (dimension, x) in (first..).zip(out.iter_mut()) {
             *x = self.coordinate_of(index, row, &pattern, dimension);
         }
@@ -521,8 +545,8 @@ impl SamplerNd for OrthogonalArray {
         let out = check_nd_out(out, self.dimensions);
         let (index, pattern) = (reduce_index(index, self.n), self.prepare(pattern));
         let row = pattern.rows.apply(index);
-        if self.offset != OrthogonalArrayOffset::Jittered && self.strength() <= self.q.get() + 1 {
-            self.sample_by_groups(index, row, &pattern, out);
+        if self.by_groups(0, out.len()) {
+            self.coordinates_by_groups(index, row, &pattern, 0, out);
             return;
         }
         for (dimension, x) in (0..).zip(out.iter_mut()) {
