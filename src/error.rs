@@ -2,8 +2,6 @@
 
 use core::fmt;
 
-use crate::samplers::SamplerKind;
-
 /// What was wrong with the input to a sampler constructor or a metric.
 ///
 /// Every variant carries the offending value so that the message can say what
@@ -28,8 +26,8 @@ pub enum Error {
     },
     /// More samples (or grid cells) than the sampler can keep its guarantee for.
     TooManySamples {
-        /// The sampler.
-        sampler: SamplerKind,
+        /// The sampler, by its [`SamplerKind`](crate::SamplerKind) name.
+        sampler: &'static str,
         /// How many were asked for (columns x rows for a grid).
         requested: u64,
         /// The largest count the sampler accepts.
@@ -40,8 +38,8 @@ pub enum Error {
     /// A grid with a side above 2^24 strata, more than f32 coordinates in
     /// `[0, 1)` can tell apart (the most square grid of a prime `n` is `1 x n`).
     GridTooFine {
-        /// The sampler.
-        sampler: SamplerKind,
+        /// The sampler, by its [`SamplerKind`](crate::SamplerKind) name.
+        sampler: &'static str,
         /// Columns of the grid.
         columns: u32,
         /// Rows of the grid.
@@ -157,20 +155,11 @@ pub enum Error {
         /// The largest value accepted.
         max: u32,
     },
-    /// A name that is not a sampler's ([`SamplerKind::from_str`](core::str::FromStr)).
-    UnknownSampler {
-        /// The name given (its first [`InputText::CAPACITY`] bytes).
-        name: InputText,
-    },
+    /// A name that is not a sampler's ([`SamplerKind::from_str`](crate::SamplerKind)).
+    UnknownSampler(UnknownName),
     /// A name that is not a pixel sampler's
-    /// ([`PixelSamplerKind::from_str`](core::str::FromStr)).
-    UnknownPixelSampler {
-        /// The name given (its first [`InputText::CAPACITY`] bytes).
-        name: InputText,
-        /// The pixel samplers' own names, listed after the
-        /// [`SamplerKind`] names in the message.
-        pixel_only: &'static [&'static str],
-    },
+    /// ([`PixelSamplerKind::from_str`](crate::PixelSamplerKind)).
+    UnknownPixelSampler(UnknownName),
     /// [`ZSobol`](crate::ZSobol) was asked for a number of samples per
     /// pixel that is not a power of two.
     SamplesNotPowerOfTwo {
@@ -247,20 +236,11 @@ pub enum Error {
     },
 }
 
-/// A short copy of text a caller passed in (a sampler name), carried inside
-/// [`Error`] so that `Error` stays `Copy` and needs no allocator: the first
+/// A short copy of text a caller passed in (a sampler name), so that
+/// [`Error`] stays `Copy` and needs no allocator: the first
 /// [`CAPACITY`](Self::CAPACITY) bytes, cut at a character boundary.
-///
-/// ```
-/// use wellspread::{Error, SamplerKind};
-/// let Err(Error::UnknownSampler { name }) = "jitterd".parse::<SamplerKind>() else {
-///     unreachable!()
-/// };
-/// assert_eq!(name.as_str(), "jitterd");
-/// assert!(!name.is_truncated());
-/// ```
 #[derive(Clone, Copy, PartialEq, Eq, Hash)]
-pub struct InputText {
+pub(crate) struct InputText {
     bytes: [u8; InputText::CAPACITY],
     len: u8,
     truncated: bool,
@@ -269,12 +249,12 @@ pub struct InputText {
 impl InputText {
     /// Bytes kept: longer than every sampler name, short enough that an
     /// `Error` stays a few words.
-    pub const CAPACITY: usize = 40;
+    pub(crate) const CAPACITY: usize = 40;
 
     /// The first [`CAPACITY`](Self::CAPACITY) bytes of `text`, cut back to
     /// a character boundary.
     #[must_use]
-    pub fn new(text: &str) -> Self {
+    pub(crate) fn new(text: &str) -> Self {
         let mut len = text.len().min(Self::CAPACITY);
         while !text.is_char_boundary(len) {
             len -= 1;
@@ -291,14 +271,14 @@ impl InputText {
 
     /// The text kept.
     #[must_use]
-    pub fn as_str(&self) -> &str {
+    pub(crate) fn as_str(&self) -> &str {
         // `new` cut at a character boundary, so this never fails.
         core::str::from_utf8(&self.bytes[..usize::from(self.len)]).unwrap_or("")
     }
 
     /// `true` if the original text was longer than what is kept.
     #[must_use]
-    pub const fn is_truncated(&self) -> bool {
+    pub(crate) const fn is_truncated(&self) -> bool {
         self.truncated
     }
 }
@@ -320,6 +300,80 @@ impl fmt::Display for InputText {
             f.write_str("...")?;
         }
         Ok(())
+    }
+}
+
+/// A name a parser did not know ([`Error::UnknownSampler`],
+/// [`Error::UnknownPixelSampler`]): the text given and the names that
+/// parser accepts, which the message lists, each once.
+///
+/// ```
+/// use wellspread::{Error, SamplerKind};
+/// let Err(Error::UnknownSampler(unknown)) = "jitterd".parse::<SamplerKind>() else {
+///     unreachable!()
+/// };
+/// assert_eq!(unknown.as_str(), "jitterd");
+/// assert!(!unknown.is_truncated());
+/// assert!(unknown.names().any(|name| name == "jittered"));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct UnknownName {
+    input: InputText,
+    names: &'static [&'static str],
+    aliases: &'static [&'static str],
+}
+
+impl UnknownName {
+    /// `input` (its first 40 bytes, cut at a character boundary) against
+    /// the parser's `names` and `aliases`.
+    pub(crate) fn new(
+        input: &str,
+        names: &'static [&'static str],
+        aliases: &'static [&'static str],
+    ) -> Self {
+        Self {
+            input: InputText::new(input),
+            names,
+            aliases,
+        }
+    }
+
+    /// The text given: its first 40 bytes, cut back to a character
+    /// boundary.
+    #[must_use]
+    pub fn as_str(&self) -> &str {
+        self.input.as_str()
+    }
+
+    /// `true` if the text given was longer than [`as_str`](Self::as_str).
+    #[must_use]
+    pub const fn is_truncated(&self) -> bool {
+        self.input.is_truncated()
+    }
+
+    /// The names the parser accepts, aliases last.
+    pub fn names(&self) -> impl Iterator<Item = &'static str> + Clone {
+        self.names.iter().chain(self.aliases).copied()
+    }
+}
+
+impl fmt::Display for UnknownName {
+    /// `"x"; expected one of: ...`, the input escaped so that the message
+    /// stays one line, a cut input ending in `...`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "\"{}", self.as_str().escape_debug())?;
+        if self.is_truncated() {
+            f.write_str("...")?;
+        }
+        f.write_str("\"; expected one of:")?;
+        for name in self.names {
+            write!(f, " {name}")?;
+        }
+        f.write_str(" (any case, with or without - _ or spaces")?;
+        for (i, alias) in self.aliases.iter().enumerate() {
+            write!(f, "{}{alias}", if i == 0 { "; aliases: " } else { ", " })?;
+        }
+        f.write_str(")")
     }
 }
 
@@ -454,28 +508,8 @@ impl fmt::Display for Error {
                 "a power spectrum needs a largest frequency from 1 to {max}, \
                  got {max_frequency}"
             ),
-            Error::UnknownSampler { name } => {
-                // Escaped, so that a newline in the name shows as `\n` and
-                // the message stays one line; a cut name ends in `...`.
-                write!(f, "unknown sampler \"{}", name.as_str().escape_debug())?;
-                if name.is_truncated() {
-                    f.write_str("...")?;
-                }
-                f.write_str("\"; ")?;
-                crate::samplers::write_expected_names(f, &[])
-            }
-            Error::UnknownPixelSampler { name, pixel_only } => {
-                write!(
-                    f,
-                    "unknown pixel sampler \"{}",
-                    name.as_str().escape_debug()
-                )?;
-                if name.is_truncated() {
-                    f.write_str("...")?;
-                }
-                f.write_str("\"; ")?;
-                crate::samplers::write_expected_names(f, pixel_only)
-            }
+            Error::UnknownSampler(unknown) => write!(f, "unknown sampler {unknown}"),
+            Error::UnknownPixelSampler(unknown) => write!(f, "unknown pixel sampler {unknown}"),
             Error::SamplesNotPowerOfTwo { samples_per_pixel } => {
                 let above = u64::from(samples_per_pixel).next_power_of_two();
                 write!(
@@ -581,29 +615,6 @@ fn too_many(
 mod tests {
     use super::*;
     use alloc::string::ToString;
-
-    #[test]
-    fn unknown_sampler_names_are_escaped_and_cut() {
-        let Err(Error::UnknownSampler { name }) = "jit\ntered\"".parse::<SamplerKind>() else {
-            panic!("parsed a bad name");
-        };
-        let message = Error::UnknownSampler { name }.to_string();
-        assert!(!message.contains('\n'), "{message}");
-        assert!(
-            message.starts_with(r#"unknown sampler "jit\ntered\""; expected"#),
-            "{message}"
-        );
-        let long = "x".repeat(10_000);
-        let Err(Error::UnknownSampler { name }) = long.parse::<SamplerKind>() else {
-            panic!("parsed a bad name");
-        };
-        let message = Error::UnknownSampler { name }.to_string();
-        let quoted = &message[..message.find(';').unwrap()];
-        assert_eq!(
-            quoted,
-            alloc::format!("unknown sampler \"{}...\"", &long[..40])
-        );
-    }
 
     #[test]
     fn samples_per_pixel_suggestions_fit_in_u32() {

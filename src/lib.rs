@@ -151,7 +151,7 @@ mod traits;
 pub mod warp;
 pub mod wgsl;
 
-pub use error::{Error, InputText};
+pub use error::{Error, UnknownName};
 pub use pixel::{
     AnyPixelSampler, BlueNoise, Domain, Draw, ExplicitColumns, Padded, PaddedNd, PixelColumns,
     PixelSampler, PixelSamplerKind, PixelSamplerVisitor, Root, SearchedColumns, ZSobol,

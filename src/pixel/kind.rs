@@ -7,9 +7,8 @@ use core::str::FromStr;
 use glam::{Vec2, Vec3, Vec4};
 
 use super::{BlueNoise, Draw, Padded, PaddedNd, PixelSampler, Root, ZSobol};
-use crate::error::Error;
-use crate::error::InputText;
-use crate::samplers::same_name;
+use crate::error::{Error, UnknownName};
+use crate::samplers::{ALIAS_NAMES as SAMPLER_ALIAS_NAMES, same_name};
 use crate::samplers::{AnySampler, LatinHypercube, OrthogonalArray, SamplerKind, SamplerVisitor};
 use crate::traits::DomainSampler;
 
@@ -22,12 +21,32 @@ const PIXEL_ONLY: [PixelSamplerKind; 4] = [
     PixelSamplerKind::LatinHypercube,
 ];
 
-/// Their names, for error messages.
-pub(crate) const PIXEL_ONLY_NAMES: &[&str] = &{
-    let mut names = [""; PIXEL_ONLY.len()];
+/// The pixel-only kinds' short names.
+const PIXEL_ALIASES: [(&str, PixelSamplerKind); 1] = [("lhs", PixelSamplerKind::LatinHypercube)];
+
+/// Every name the parser takes, for error messages: the padded kinds'
+/// names, then the pixel-only kinds'.
+const PIXEL_NAMES: [&str; SamplerKind::ALL.len() + PIXEL_ONLY.len()] = {
+    let mut names = [""; SamplerKind::ALL.len() + PIXEL_ONLY.len()];
     let mut i = 0;
-    while i < PIXEL_ONLY.len() {
-        names[i] = PIXEL_ONLY[i].name();
+    while i < names.len() {
+        names[i] = PixelSamplerKind::ALL[i].name();
+        i += 1;
+    }
+    names
+};
+
+/// Every alias the parser takes: [`SamplerKind`]'s, then the pixel-only
+/// kinds'.
+const PIXEL_ALIAS_NAMES: [&str; SAMPLER_ALIAS_NAMES.len() + PIXEL_ALIASES.len()] = {
+    let mut names = [""; SAMPLER_ALIAS_NAMES.len() + PIXEL_ALIASES.len()];
+    let mut i = 0;
+    while i < names.len() {
+        names[i] = if i < SAMPLER_ALIAS_NAMES.len() {
+            SAMPLER_ALIAS_NAMES[i]
+        } else {
+            PIXEL_ALIASES[i - SAMPLER_ALIAS_NAMES.len()].0
+        };
         i += 1;
     }
     names
@@ -41,8 +60,9 @@ pub(crate) const PIXEL_ONLY_NAMES: &[&str] = &{
 /// `"correlated-multi-jittered"`, ...) for its padded form, `"zsobol"`,
 /// `"blue-noise"`, `"orthogonal"` and `"latin-hypercube"`.
 /// Parsing ignores case, `-`, `_` and spaces, and accepts the short
-/// aliases `cmj`, `mj`, `pmj`, `rooks`, `lhs` (padded n-rooks, the 2D
-/// Latin hypercube), `stratified` and `white`.
+/// aliases `cmj`, `mj`, `pmj`, `rooks` (padded n-rooks, the 2D Latin
+/// hypercube), `stratified`, `white` and `lhs` (`latin-hypercube`, the
+/// N-dimensional one).
 ///
 /// ```
 /// use wellspread::{PixelSampler, PixelSamplerKind, SamplerKind};
@@ -197,14 +217,17 @@ impl FromStr for PixelSamplerKind {
     /// [`Error::UnknownPixelSampler`], which names the input and lists
     /// the valid names.
     fn from_str(name: &str) -> Result<Self, Self::Err> {
-        if let Some(&kind) = PIXEL_ONLY.iter().find(|kind| same_name(name, kind.name())) {
+        let pixel_only = PIXEL_ONLY.iter().map(|&kind| (kind.name(), kind));
+        if let Some((_, kind)) = pixel_only
+            .chain(PIXEL_ALIASES)
+            .find(|&(known, _)| same_name(name, known))
+        {
             return Ok(kind);
         }
         name.parse::<SamplerKind>()
             .map(PixelSamplerKind::Padded)
-            .map_err(|_| Error::UnknownPixelSampler {
-                name: InputText::new(name),
-                pixel_only: PIXEL_ONLY_NAMES,
+            .map_err(|_| {
+                Error::UnknownPixelSampler(UnknownName::new(name, &PIXEL_NAMES, &PIXEL_ALIAS_NAMES))
             })
     }
 }

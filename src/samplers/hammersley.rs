@@ -92,7 +92,7 @@ impl Hammersley {
         }
         if n > Self::MAX_SAMPLES {
             return Err(Error::TooManySamples {
-                sampler: SamplerKind::Hammersley,
+                sampler: SamplerKind::Hammersley.name(),
                 requested: n as u64,
                 max: Self::MAX_SAMPLES as u64,
                 reason: "one point per column of n needs n distinct f32 columns in [0, 1), and f32 has 2^24 at equal spacing",

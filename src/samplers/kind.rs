@@ -11,7 +11,7 @@ use super::{
     BlueMultiJittered, CorrelatedMultiJittered, Halton, Hammersley, Jittered, MultiJittered,
     NRooks, Pmj02, Random, Regular, Sobol,
 };
-use crate::error::Error;
+use crate::error::{Error, UnknownName};
 use crate::traits::Sampler2D;
 use crate::traits::{DomainSampler, Sequence2D};
 
@@ -267,17 +267,38 @@ impl fmt::Display for SamplerKind {
 /// Short names accepted besides the full ones, each with its kind: the one
 /// alias table, which [`SamplerKind`]'s and
 /// [`PixelSamplerKind`](crate::PixelSamplerKind)'s parsers and their error
-/// messages read.
-pub(crate) const ALIASES: &[(&str, SamplerKind)] = &[
+/// messages read. (`latin-hypercube` and `lhs` are the N-dimensional
+/// pixel sampler's names, not aliases of `n-rooks`.)
+pub(crate) const ALIASES: [(&str, SamplerKind); 6] = [
     ("cmj", SamplerKind::CorrelatedMultiJittered),
     ("mj", SamplerKind::MultiJittered),
     ("pmj", SamplerKind::Pmj02),
     ("rooks", SamplerKind::NRooks),
-    ("latin-hypercube", SamplerKind::NRooks),
-    ("lhs", SamplerKind::NRooks),
     ("stratified", SamplerKind::Jittered),
     ("white", SamplerKind::Random),
 ];
+
+/// Every kind's name, in [`SamplerKind::ALL`]'s order, for error messages.
+pub(crate) const NAMES: [&str; SamplerKind::ALL.len()] = {
+    let mut names = [""; SamplerKind::ALL.len()];
+    let mut i = 0;
+    while i < names.len() {
+        names[i] = SamplerKind::ALL[i].name();
+        i += 1;
+    }
+    names
+};
+
+/// [`ALIASES`]' names, for error messages.
+pub(crate) const ALIAS_NAMES: [&str; ALIASES.len()] = {
+    let mut names = [""; ALIASES.len()];
+    let mut i = 0;
+    while i < names.len() {
+        names[i] = ALIASES[i].0;
+        i += 1;
+    }
+    names
+};
 
 /// `a` and `b` equal ignoring ASCII case and the separators `-`, `_`, ` `:
 /// the one rule for sampler names.
@@ -288,23 +309,6 @@ pub(crate) fn same_name(a: &str, b: &str) -> bool {
             .map(|c| c.to_ascii_lowercase())
     }
     key(a).eq(key(b))
-}
-
-/// Writes the valid names for an error message: every kind's name, then
-/// `extra` (the pixel samplers' own), then the aliases.
-pub(crate) fn write_expected_names(f: &mut fmt::Formatter<'_>, extra: &[&str]) -> fmt::Result {
-    f.write_str("expected one of:")?;
-    for kind in SamplerKind::ALL {
-        write!(f, " {kind}")?;
-    }
-    for name in extra {
-        write!(f, " {name}")?;
-    }
-    f.write_str(" (any case, with or without - _ or spaces; aliases:")?;
-    for (i, (alias, _)) in ALIASES.iter().enumerate() {
-        write!(f, "{}{alias}", if i == 0 { " " } else { ", " })?;
-    }
-    f.write_str(")")
 }
 
 impl FromStr for SamplerKind {
@@ -329,9 +333,11 @@ impl FromStr for SamplerKind {
                     .find(|(alias, _)| same_name(alias, name))
                     .map(|&(_, kind)| kind)
             })
-            .ok_or(Error::UnknownSampler {
-                name: crate::error::InputText::new(name),
-            })
+            .ok_or(Error::UnknownSampler(UnknownName::new(
+                name,
+                &NAMES,
+                &ALIAS_NAMES,
+            )))
     }
 }
 

@@ -393,15 +393,15 @@ fn every_pixel_sampler_parses_by_name_alias_and_any_case() {
         ("MJ", SamplerKind::MultiJittered),
         ("pmj", SamplerKind::Pmj02),
         ("nrooks", SamplerKind::NRooks),
-        ("lhs", SamplerKind::NRooks),
+        ("rooks", SamplerKind::NRooks),
     ] {
         assert_eq!(
             alias.parse::<PixelSamplerKind>().unwrap(),
             PixelSamplerKind::Padded(kind)
         );
     }
-    // The pixel samplers' own names come first: "latin-hypercube" is the
-    // N-dimensional one, though `SamplerKind` takes it for n-rooks.
+    // "latin-hypercube" and "lhs" are the N-dimensional one (`SamplerKind`
+    // refuses both: its 2D Latin hypercube is "n-rooks").
     assert_eq!(
         "LatinHypercube".parse::<PixelSamplerKind>().unwrap(),
         PixelSamplerKind::LatinHypercube

@@ -63,12 +63,22 @@ fn kinds_round_trip_through_their_names() {
         assert_eq!(kind.to_string(), kind.name());
         assert_eq!(kind.build(9).unwrap().kind(), kind);
     }
-    for bad in ["", "-", "jitter", "jitterd", "n-rook", "sobol2", "zsobol"] {
-        let Err(Error::UnknownSampler { name }) = bad.parse::<SamplerKind>() else {
+    for bad in [
+        "",
+        "-",
+        "jitter",
+        "jitterd",
+        "n-rook",
+        "sobol2",
+        "zsobol",
+        "latin-hypercube",
+        "lhs",
+    ] {
+        let Err(Error::UnknownSampler(unknown)) = bad.parse::<SamplerKind>() else {
             panic!("{bad:?} parsed");
         };
-        assert_eq!(name.as_str(), bad);
-        let message = Error::UnknownSampler { name }.to_string();
+        assert_eq!(unknown.as_str(), bad);
+        let message = Error::UnknownSampler(unknown).to_string();
         assert!(message.contains(&format!("\"{bad}\"")), "{message}");
         for &kind in SamplerKind::ALL {
             assert!(message.contains(kind.name()), "{message}");
@@ -77,16 +87,104 @@ fn kinds_round_trip_through_their_names() {
     // A long input is kept to its first bytes, cut at a character
     // boundary, and the message says it was cut.
     let long = "é".repeat(30);
-    let Err(Error::UnknownSampler { name }) = long.parse::<SamplerKind>() else {
+    let Err(Error::UnknownSampler(unknown)) = long.parse::<SamplerKind>() else {
         panic!("parsed");
     };
-    assert!(name.is_truncated() && long.starts_with(name.as_str()));
-    assert_eq!(name.as_str().len(), 40);
+    assert!(unknown.is_truncated() && long.starts_with(unknown.as_str()));
+    assert_eq!(unknown.as_str().len(), 40);
     assert!(
-        Error::UnknownSampler { name }
+        Error::UnknownSampler(unknown)
             .to_string()
             .contains("é...\"")
     );
+    let long = "x".repeat(10_000);
+    let message = long.parse::<SamplerKind>().unwrap_err().to_string();
+    let quoted = &message[..message.find(';').unwrap()];
+    assert_eq!(quoted, format!("unknown sampler \"{}...\"", &long[..40]));
+    // Escaped: a newline or a quote in the name keeps the message one line.
+    let message = "jit\ntered\""
+        .parse::<SamplerKind>()
+        .unwrap_err()
+        .to_string();
+    assert!(!message.contains('\n'), "{message}");
+    assert!(
+        message.starts_with(r#"unknown sampler "jit\ntered\""; expected"#),
+        "{message}"
+    );
+}
+
+/// Every name an error message lists, each exactly once, and each one
+/// parses: the padded 2D Latin hypercube is `n-rooks` (alias `rooks`),
+/// `latin-hypercube` (alias `lhs`) is the N-dimensional pixel sampler.
+#[test]
+fn every_error_lists_each_name_once_and_each_parses() {
+    use wellspread::PixelSamplerKind;
+    let Err(Error::UnknownSampler(unknown)) = "nope".parse::<SamplerKind>() else {
+        panic!("parsed");
+    };
+    let names: Vec<_> = unknown.names().collect();
+    assert_eq!(
+        names,
+        [
+            "regular",
+            "random",
+            "jittered",
+            "n-rooks",
+            "multi-jittered",
+            "correlated-multi-jittered",
+            "blue-multi-jittered",
+            "hammersley",
+            "halton",
+            "sobol",
+            "pmj02",
+            "cmj",
+            "mj",
+            "pmj",
+            "rooks",
+            "stratified",
+            "white"
+        ]
+    );
+    for name in &names {
+        assert!(name.parse::<SamplerKind>().is_ok(), "{name}");
+    }
+    let Err(Error::UnknownPixelSampler(unknown)) = "nope".parse::<PixelSamplerKind>() else {
+        panic!("parsed");
+    };
+    let pixel_names: Vec<_> = unknown.names().collect();
+    for name in &pixel_names {
+        assert!(name.parse::<PixelSamplerKind>().is_ok(), "{name}");
+    }
+    let message = Error::UnknownPixelSampler(unknown).to_string();
+    for list in [&names, &pixel_names] {
+        let mut sorted = list.clone();
+        sorted.sort_unstable();
+        sorted.dedup();
+        assert_eq!(sorted.len(), list.len(), "{list:?}");
+    }
+    for name in &pixel_names {
+        let words = message
+            .split(|c: char| c == ' ' || c == ',' || c == ')' || c == ':')
+            .filter(|word| word == name)
+            .count();
+        assert_eq!(words, 1, "{name} in {message}");
+    }
+    assert_eq!(
+        pixel_names.len(),
+        PixelSamplerKind::ALL.len() + names.len() - SamplerKind::ALL.len() + 1
+    );
+    for name in ["latin-hypercube", "LHS", "Latin_Hypercube"] {
+        assert_eq!(
+            name.parse::<PixelSamplerKind>(),
+            Ok(PixelSamplerKind::LatinHypercube)
+        );
+    }
+    for name in ["n-rooks", "rooks"] {
+        assert_eq!(
+            name.parse::<PixelSamplerKind>(),
+            Ok(PixelSamplerKind::Padded(SamplerKind::NRooks))
+        );
+    }
 }
 
 #[test]
@@ -151,7 +249,7 @@ fn above_the_largest_n_is_an_error() {
                         max: m,
                         ..
                     }) => {
-                        assert_eq!(sampler, kind);
+                        assert_eq!(sampler, kind.name());
                         assert_eq!(requested, n as u64);
                         assert_eq!(m, max as u64);
                     }

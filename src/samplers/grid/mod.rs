@@ -92,7 +92,7 @@ impl Grid {
         }
         if columns > MAX_STRATA || rows > MAX_STRATA {
             return Err(Error::GridTooFine {
-                sampler,
+                sampler: sampler.name(),
                 columns,
                 rows,
             });
@@ -100,7 +100,7 @@ impl Grid {
         let cells = columns as u64 * rows as u64;
         if cells > u32::MAX as u64 {
             return Err(Error::TooManySamples {
-                sampler,
+                sampler: sampler.name(),
                 requested: cells,
                 max: u32::MAX as u64,
                 reason: "sample indices are u32",
@@ -118,7 +118,7 @@ impl Grid {
         }
         if n > MAX_STRATA {
             return Err(Error::TooManySamples {
-                sampler,
+                sampler: sampler.name(),
                 requested: n as u64,
                 max: MAX_STRATA as u64,
                 reason: "the rook condition needs n distinct f32 columns in [0, 1), \
@@ -361,7 +361,7 @@ mod tests {
         assert_eq!(
             err,
             Error::GridTooFine {
-                sampler: SamplerKind::Jittered,
+                sampler: "jittered",
                 columns: 1,
                 rows: 16_777_259
             }
