@@ -206,7 +206,7 @@ pub enum Error {
         count: usize,
     },
     /// A pixel column given to
-    /// [`ExplicitColumns::new`](crate::ExplicitColumns::new) has a
+    /// [`ExplicitColumns::new`](crate::blue_noise::ExplicitColumns::new) has a
     /// coordinate with more than 24 digits.
     PixelColumnTooWide {
         /// Its place in the list, 0 to 31.
@@ -215,7 +215,7 @@ pub enum Error {
         column: [u32; 2],
     },
     /// The pixel columns given to
-    /// [`ExplicitColumns::new`](crate::ExplicitColumns::new), together
+    /// [`ExplicitColumns::new`](crate::blue_noise::ExplicitColumns::new), together
     /// with the 16 Sobol' sample columns, do not span all 48 digits of a
     /// shift, so two pixels of one tile would share a shift.
     DependentPixelColumns {

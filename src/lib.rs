@@ -40,7 +40,7 @@
 //! A renderer asks for samples by pixel, sample index and dimension pair
 //! (film position, lens, time, light, ...): that is [`PixelSampler`].
 //! [`Padded`] makes one of any [`Sampler2D`] that implements
-//! [`DomainSampler`] (every sampler of the crate does; for one of your own,
+//! [`DomainSampler`](implement::DomainSampler) (every sampler of the crate does; for one of your own,
 //! an empty `impl DomainSampler for MySampler {}` takes the defaults), each
 //! pixel and dimension pair an independent pattern from [`pattern_seed`];
 //! [`ZSobol`] (at its power-of-two count) and [`BlueNoise`] (at every
@@ -141,6 +141,7 @@ pub use glam;
 
 mod error;
 pub mod filter;
+pub mod implement;
 #[cfg(feature = "alloc")]
 pub mod metrics;
 mod pixel;
@@ -153,16 +154,24 @@ pub mod wgsl;
 
 pub use error::{Error, UnknownName};
 pub use pixel::{
-    AnyPixelSampler, BlueNoise, Domain, Draw, ExplicitColumns, Padded, PaddedNd, PixelColumns,
-    PixelSampler, PixelSamplerKind, PixelSamplerVisitor, Root, SearchedColumns, ZSobol,
+    AnyPixelSampler, BlueNoise, Domain, Padded, PaddedNd, PixelSampler, PixelSamplerKind,
+    PixelSamplerVisitor, ZSobol,
 };
 pub use primitives::pattern_seed;
+
+/// [`BlueNoise`]'s pixel columns, the research knob: which column of its
+/// 64 x 64 ranking tile each pixel reads. [`BlueNoise::new`] uses the
+/// searched columns built in; [`BlueNoise::with_columns`] takes any
+/// [`PixelColumns`](blue_noise::PixelColumns).
+pub mod blue_noise {
+    pub use crate::pixel::blue_noise::{ExplicitColumns, PixelColumns, SearchedColumns};
+}
 pub use samplers::{
     AnySampler, BlueMultiJittered, CorrelatedMultiJittered, Halton, Hammersley, Jittered,
     LatinHypercube, MultiJittered, NRooks, OrthogonalArray, OrthogonalArrayOffset, Pmj02, Random,
     Regular, SamplerKind, SamplerVisitor, Sobol, Sobol4D,
 };
-pub use traits::{DomainSampler, Sampler2D, SamplerNd, Sequence2D, second_stream, stratified_1d};
+pub use traits::{Sampler2D, SamplerNd, Sequence2D};
 
 // The README's usage example runs as a doctest.
 #[cfg(doctest)]

@@ -2,7 +2,8 @@
 //! inputs (random plus every edge), the test shader and the CPU twin of
 //! what it writes.
 
-use wellspread::{AnyPixelSampler, Draw, Jittered, PixelSampler, PixelSamplerKind, SamplerKind};
+use wellspread::implement::{Draw, PixelSamplerHooks};
+use wellspread::{AnyPixelSampler, Jittered, PixelSampler, PixelSamplerKind, SamplerKind};
 
 use crate::{Gpu, HARNESS};
 

@@ -40,11 +40,10 @@ use std::process::ExitCode;
 
 use clap::Parser;
 use rayon::prelude::*;
+use wellspread::blue_noise::{ExplicitColumns, PixelColumns, SearchedColumns};
 use wellspread::glam::Vec2;
 use wellspread::primitives::hash_u32;
-use wellspread::{
-    BlueNoise, ExplicitColumns, Padded, PixelColumns, PixelSampler, SearchedColumns, Sobol,
-};
+use wellspread::{BlueNoise, Padded, PixelSampler, Sobol};
 
 #[path = "shared/cli.rs"]
 pub mod shared;

@@ -5,7 +5,7 @@
 
 use glam::{Vec2, Vec3, Vec4};
 
-use super::{Draw, PixelSampler, Root};
+use super::{Draw, PixelSampler, PixelSamplerHooks, Root};
 use crate::error::Error;
 use crate::primitives::morton::{morton, morton_add};
 use crate::primitives::{hash_u32, mix64, owen_scramble_reversed, prefix_shuffle, salt};
@@ -244,7 +244,8 @@ impl PixelColumns for SearchedColumns {
 /// # Examples
 ///
 /// ```
-/// use wellspread::{BlueNoise, ExplicitColumns, PixelColumns, PixelSampler, SearchedColumns};
+/// use wellspread::blue_noise::{ExplicitColumns, PixelColumns, SearchedColumns};
+/// use wellspread::{BlueNoise, PixelSampler};
 /// let columns = ExplicitColumns::new(SearchedColumns.columns())?;
 /// let shipped = BlueNoise::new(16, [64, 64], 3)?;
 /// let explicit = shipped.with_columns(columns);
@@ -329,7 +330,7 @@ impl PixelColumns for ExplicitColumns {
 ///   dyadic block (many are not nets), and a prefix between two powers of
 ///   two `2^m < n < 2^(m+1)` is the net `0..2^m` plus a uniformly random
 ///   subset of the next block. Progressive passes of `2^k` samples that
-///   are nets each: [`DomainSampler`](crate::DomainSampler)'s section on
+///   are nets each: [`DomainSampler`](crate::implement::DomainSampler)'s section on
 ///   which ranges are nets.
 /// - Each point is uniform over `[0, 1)^2`; estimates are unbiased, with
 ///   the per-pixel variance of `Padded<Sobol>`.
@@ -471,7 +472,8 @@ impl<C: PixelColumns> BlueNoise<C> {
     /// made as before, with `columns` in place of the old ones.
     ///
     /// ```
-    /// use wellspread::{BlueNoise, ExplicitColumns, PixelColumns, PixelSampler, SearchedColumns};
+    /// use wellspread::blue_noise::{ExplicitColumns, PixelColumns, SearchedColumns};
+    /// use wellspread::{BlueNoise, PixelSampler};
     /// let mut columns = SearchedColumns.columns();
     /// columns[0][0] ^= 1 << 23;
     /// let sampler = BlueNoise::unbounded([64, 64], 0)?.with_columns(ExplicitColumns::new(columns)?);
@@ -551,7 +553,9 @@ impl<C: PixelColumns> PixelSampler for BlueNoise<C> {
             n => Some(n),
         }
     }
+}
 
+impl<C: PixelColumns> PixelSamplerHooks for BlueNoise<C> {
     /// The key from the frame and the pixel's `65536 x 65536` tile; the
     /// pixel state its Morton code inside the tile.
     #[inline(always)]

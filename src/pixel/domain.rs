@@ -2,6 +2,8 @@
 
 use glam::{Vec2, Vec3, Vec4};
 
+#[cfg(doc)]
+use super::PixelSamplerHooks;
 use super::{Draw, PixelSampler};
 use crate::primitives::{child_key, salt};
 
@@ -33,7 +35,7 @@ use crate::primitives::{child_key, salt};
 /// - Draw `k` of a domain uses the pattern picked by `stream =
 ///   mix64(key + k W)`, the same for every sample index of the pixel: over
 ///   a pixel's samples each draw is one set of the sampler, with its
-///   guarantees (see [`DomainSampler`](crate::DomainSampler) for what each
+///   guarantees (see [`DomainSampler`](crate::implement::DomainSampler) for what each
 ///   width gives).
 /// - **Independent draws.** Draws from different keys (`branch(k1)` and
 ///   `branch(k2)`, a branch and its parent's own draws, `split` children
@@ -76,8 +78,8 @@ use crate::primitives::{child_key, salt};
 ///
 /// # Cost
 ///
-/// `start`: the sampler's [`root`](PixelSampler::root) and
-/// [`locate`](PixelSampler::locate) (for [`Padded`](crate::Padded) a few
+/// `start`: the sampler's [`root`](PixelSamplerHooks::root) and
+/// [`locate`](PixelSamplerHooks::locate) (for [`Padded`](crate::Padded) a few
 /// integer operations, no hash). Each draw: one
 /// [`mix64`](crate::primitives::mix64) and the sampler's kernel. `branch`
 /// and `split`: one `mix64` and a multiply-add (`split` also the sampler's
@@ -174,7 +176,7 @@ impl<S: PixelSampler> Domain<S> {
     }
 
     /// The sample index within its set (after the edge rule of
-    /// [`PixelSampler::locate`] and any [`split`](Self::split)).
+    /// [`PixelSamplerHooks::locate`] and any [`split`](Self::split)).
     #[inline]
     pub const fn index(&self) -> u32 {
         self.index

@@ -6,7 +6,7 @@ use core::str::FromStr;
 
 use glam::{Vec2, Vec3, Vec4};
 
-use super::{BlueNoise, Draw, Padded, PaddedNd, PixelSampler, Root, ZSobol};
+use super::{BlueNoise, Draw, Padded, PaddedNd, PixelSampler, PixelSamplerHooks, Root, ZSobol};
 use crate::error::{Error, UnknownName};
 use crate::samplers::{ALIAS_NAMES as SAMPLER_ALIAS_NAMES, same_name};
 use crate::samplers::{AnySampler, LatinHypercube, OrthogonalArray, SamplerKind, SamplerVisitor};
@@ -365,6 +365,9 @@ impl PixelSampler for AnyPixelSampler {
             AnyPixelSampler::LatinHypercube(s) => s.samples_per_pixel(),
         }
     }
+}
+
+impl PixelSamplerHooks for AnyPixelSampler {
     #[inline(always)]
     fn root(&self, pixel: [u32; 2]) -> Root {
         match self {
@@ -375,6 +378,7 @@ impl PixelSampler for AnyPixelSampler {
             AnyPixelSampler::LatinHypercube(s) => s.root(pixel),
         }
     }
+
     #[inline(always)]
     fn locate(&self, index: u32, key: u64) -> (u32, u64) {
         match self {
@@ -385,6 +389,7 @@ impl PixelSampler for AnyPixelSampler {
             AnyPixelSampler::LatinHypercube(s) => s.locate(index, key),
         }
     }
+
     #[inline(always)]
     fn draw_1d(&self, draw: Draw) -> f32 {
         match self {
@@ -395,6 +400,7 @@ impl PixelSampler for AnyPixelSampler {
             AnyPixelSampler::LatinHypercube(s) => kernel_1d(s, draw),
         }
     }
+
     #[inline(always)]
     fn draw_2d(&self, draw: Draw) -> Vec2 {
         match self {
@@ -405,6 +411,7 @@ impl PixelSampler for AnyPixelSampler {
             AnyPixelSampler::LatinHypercube(s) => kernel_2d(s, draw),
         }
     }
+
     #[inline(always)]
     fn draw_3d(&self, draw: Draw) -> Vec3 {
         match self {
@@ -415,6 +422,7 @@ impl PixelSampler for AnyPixelSampler {
             AnyPixelSampler::LatinHypercube(s) => kernel_3d(s, draw),
         }
     }
+
     #[inline(always)]
     fn draw_4d(&self, draw: Draw) -> Vec4 {
         match self {

@@ -15,7 +15,7 @@ mod zsobol;
 
 use glam::{Vec2, Vec3, Vec4};
 
-pub use blue_noise::{BlueNoise, ExplicitColumns, PixelColumns, SearchedColumns};
+pub use blue_noise::BlueNoise;
 pub use domain::Domain;
 pub use kind::{AnyPixelSampler, PixelSamplerKind, PixelSamplerVisitor};
 pub use padded::Padded;
@@ -72,7 +72,7 @@ pub(crate) fn check_film(samples_per_pixel: u32, resolution: [u32; 2]) -> Result
 ///   and 1 and the first `2^a` passes together, but a single pass `p >= 2`
 ///   is not a net (for passes that are nets each, draw pass `p` from
 ///   `start(pixel, i).branch(p)`, `i < n`: see
-///   [`DomainSampler`](crate::DomainSampler)). Nothing panics, nothing
+///   [`DomainSampler`](crate::implement::DomainSampler)). Nothing panics, nothing
 ///   repeats.
 /// - **Progressive samplers have no count.** `samples_per_pixel()` is
 ///   `None` for an unbounded sequence (`Padded::new(Sobol::unbounded(), _)`):
@@ -85,11 +85,10 @@ pub(crate) fn check_film(samples_per_pixel: u32, resolution: [u32; 2]) -> Result
 ///
 /// # Implementing
 ///
-/// Three methods are required: [`samples_per_pixel`](Self::samples_per_pixel),
-/// [`root`](Self::root) (what `start` computes once per pixel sample) and
-/// [`draw_2d`](Self::draw_2d). The other draws have padded defaults;
-/// override them to make draws better (stratified 1D draws, true 4D sets),
-/// as [`Padded`], [`ZSobol`] and [`BlueNoise`] do.
+/// A renderer calls the three methods here; a new sampler also
+/// implements the hooks these call, [`PixelSamplerHooks`]
+/// ([`implement`](crate::implement) lists the steps): `samples_per_pixel`
+/// here, and `root` and `draw_2d` there are required.
 ///
 /// # Examples
 ///
@@ -141,12 +140,89 @@ pub(crate) fn check_film(samples_per_pixel: u32, resolution: [u32; 2]) -> Result
 /// assert!(image.iter().all(|v| v.is_finite()));
 /// # Ok::<(), wellspread::Error>(())
 /// ```
-pub trait PixelSampler: Send + Sync {
+pub trait PixelSampler: PixelSamplerHooks + Send + Sync {
     /// Samples per pixel of one pass (see the edges above), or `None` for a
     /// progressive sampler, which takes any index.
     fn samples_per_pixel(&self) -> Option<u32>;
 
-    /// What [`start`](Self::start) computes once per pixel sample: the
+    /// Draw `pair` of sample `index` of `pixel` as a point in `[0, 1)^2`,
+    /// in O(1): exactly the `pair`-th [`Domain::next_2d`] of
+    /// `start(pixel, index)` after `pair` calls of `next_2d`, for code
+    /// written against pbrt-v4's `Get2D` or a per-pair pattern. (Only
+    /// [`PaddedNd`] reads how many dimensions the draws before took; for
+    /// every other sampler the draws before may have any width.)
+    ///
+    /// ```
+    /// use wellspread::{Padded, PixelSampler, Sobol};
+    /// let pixels = Padded::new(Sobol::new(16)?, 0);
+    /// let mut d = pixels.start([3, 4], 5);
+    /// let film = d.next_2d();
+    /// let lens = d.next_2d();
+    /// assert_eq!(film, pixels.sample_pixel([3, 4], 5, 0));
+    /// assert_eq!(lens, pixels.sample_pixel([3, 4], 5, 1));
+    /// # Ok::<(), wellspread::Error>(())
+    /// ```
+    #[inline]
+    fn sample_pixel(&self, pixel: [u32; 2], index: u32, pair: u32) -> Vec2 {
+        let root = self.root(pixel);
+        let (index, key) = self.locate(index, root.key);
+        self.draw_2d(Draw::new(
+            key,
+            pair,
+            pair.wrapping_mul(2),
+            index,
+            root.pixel_state,
+        ))
+    }
+
+    /// The domain of sample `index` of `pixel`, borrowing the sampler:
+    /// [`root`](PixelSamplerHooks::root) and [`locate`](PixelSamplerHooks::locate) run here, once;
+    /// each draw after costs one [`mix64`] and the sampler's kernel.
+    ///
+    /// The domain is 32 bytes for every sampler (a key, four counters and
+    /// the reference), `Copy`, and lives as long as the borrow: what a
+    /// renderer passes down its call tree, by `&mut` to each routine that
+    /// draws. A domain that must outlive the borrow (a thread-local, a
+    /// `'static` boundary) owns its sampler: [`Domain::start`] by value,
+    /// with the same values (its size is the sampler's plus 24 bytes).
+    ///
+    /// ```
+    /// use wellspread::{AnyPixelSampler, Domain, PixelSampler, PixelSamplerKind};
+    /// // A renderer's routine draws from the domain it is handed.
+    /// fn light_sample(d: &mut Domain<&AnyPixelSampler>) -> f32 {
+    ///     let on_light = d.next_2d();
+    ///     on_light.x * on_light.y
+    /// }
+    /// let sampler = "sobol".parse::<PixelSamplerKind>()?.build(16, [64, 64], 0)?;
+    /// let d = sampler.start([3, 4], 5); // Domain<&AnyPixelSampler>
+    /// assert_eq!(core::mem::size_of_val(&d), 32);
+    /// let light = light_sample(&mut d.branch(7));
+    /// // The owned, 'static form gives the same values.
+    /// let mut owned = Domain::start(sampler, [3, 4], 5).branch(7);
+    /// let p = owned.next_2d();
+    /// assert_eq!(light, p.x * p.y);
+    /// # Ok::<(), wellspread::Error>(())
+    /// ```
+    #[inline(always)]
+    fn start(&self, pixel: [u32; 2], index: u32) -> Domain<&Self>
+    where
+        Self: Sized,
+    {
+        Domain::start(self, pixel, index)
+    }
+}
+
+/// The hooks [`PixelSampler`]'s methods and [`Domain`]'s draws call: what
+/// a new pixel sampler implements besides
+/// [`samples_per_pixel`](PixelSampler::samples_per_pixel). A renderer
+/// never calls these; [`implement`](crate::implement) lists the steps.
+///
+/// [`root`](Self::root) and [`draw_2d`](Self::draw_2d) are required. The
+/// other draws have padded defaults; override them to make draws better
+/// (stratified 1D draws, true 4D sets), as [`Padded`], [`ZSobol`] and
+/// [`BlueNoise`] do.
+pub trait PixelSamplerHooks {
+    /// What [`PixelSampler::start`] computes once per pixel sample: the
     /// root key of the domain tree and the sampler's own pixel state.
     fn root(&self, pixel: [u32; 2]) -> Root;
 
@@ -184,72 +260,6 @@ pub trait PixelSampler: Send + Sync {
         let b = self.draw_2d(draw.second());
         Vec4::new(a.x, a.y, b.x, b.y)
     }
-
-    /// Draw `pair` of sample `index` of `pixel` as a point in `[0, 1)^2`,
-    /// in O(1): exactly the `pair`-th [`Domain::next_2d`] of
-    /// `start(pixel, index)` after `pair` calls of `next_2d`, for code
-    /// written against pbrt-v4's `Get2D` or a per-pair pattern. (Only
-    /// [`PaddedNd`] reads how many dimensions the draws before took; for
-    /// every other sampler the draws before may have any width.)
-    ///
-    /// ```
-    /// use wellspread::{Padded, PixelSampler, Sobol};
-    /// let pixels = Padded::new(Sobol::new(16)?, 0);
-    /// let mut d = pixels.start([3, 4], 5);
-    /// let film = d.next_2d();
-    /// let lens = d.next_2d();
-    /// assert_eq!(film, pixels.sample_pixel([3, 4], 5, 0));
-    /// assert_eq!(lens, pixels.sample_pixel([3, 4], 5, 1));
-    /// # Ok::<(), wellspread::Error>(())
-    /// ```
-    #[inline]
-    fn sample_pixel(&self, pixel: [u32; 2], index: u32, pair: u32) -> Vec2 {
-        let root = self.root(pixel);
-        let (index, key) = self.locate(index, root.key);
-        self.draw_2d(Draw::new(
-            key,
-            pair,
-            pair.wrapping_mul(2),
-            index,
-            root.pixel_state,
-        ))
-    }
-
-    /// The domain of sample `index` of `pixel`, borrowing the sampler:
-    /// [`root`](Self::root) and [`locate`](Self::locate) run here, once;
-    /// each draw after costs one [`mix64`] and the sampler's kernel.
-    ///
-    /// The domain is 32 bytes for every sampler (a key, four counters and
-    /// the reference), `Copy`, and lives as long as the borrow: what a
-    /// renderer passes down its call tree, by `&mut` to each routine that
-    /// draws. A domain that must outlive the borrow (a thread-local, a
-    /// `'static` boundary) owns its sampler: [`Domain::start`] by value,
-    /// with the same values (its size is the sampler's plus 24 bytes).
-    ///
-    /// ```
-    /// use wellspread::{AnyPixelSampler, Domain, PixelSampler, PixelSamplerKind};
-    /// // A renderer's routine draws from the domain it is handed.
-    /// fn light_sample(d: &mut Domain<&AnyPixelSampler>) -> f32 {
-    ///     let on_light = d.next_2d();
-    ///     on_light.x * on_light.y
-    /// }
-    /// let sampler = "sobol".parse::<PixelSamplerKind>()?.build(16, [64, 64], 0)?;
-    /// let d = sampler.start([3, 4], 5); // Domain<&AnyPixelSampler>
-    /// assert_eq!(core::mem::size_of_val(&d), 32);
-    /// let light = light_sample(&mut d.branch(7));
-    /// // The owned, 'static form gives the same values.
-    /// let mut owned = Domain::start(sampler, [3, 4], 5).branch(7);
-    /// let p = owned.next_2d();
-    /// assert_eq!(light, p.x * p.y);
-    /// # Ok::<(), wellspread::Error>(())
-    /// ```
-    #[inline(always)]
-    fn start(&self, pixel: [u32; 2], index: u32) -> Domain<&Self>
-    where
-        Self: Sized,
-    {
-        Domain::start(self, pixel, index)
-    }
 }
 
 /// A pixel sampler behind a reference is one too: the borrowed domain
@@ -261,33 +271,41 @@ impl<T: PixelSampler + ?Sized> PixelSampler for &T {
     fn samples_per_pixel(&self) -> Option<u32> {
         (**self).samples_per_pixel()
     }
+}
+
+impl<T: PixelSampler + ?Sized> PixelSamplerHooks for &T {
     #[inline]
     fn root(&self, pixel: [u32; 2]) -> Root {
         (**self).root(pixel)
     }
+
     #[inline]
     fn locate(&self, index: u32, key: u64) -> (u32, u64) {
         (**self).locate(index, key)
     }
+
     #[inline]
     fn draw_1d(&self, draw: Draw) -> f32 {
         (**self).draw_1d(draw)
     }
+
     #[inline]
     fn draw_2d(&self, draw: Draw) -> Vec2 {
         (**self).draw_2d(draw)
     }
+
     #[inline]
     fn draw_3d(&self, draw: Draw) -> Vec3 {
         (**self).draw_3d(draw)
     }
+
     #[inline]
     fn draw_4d(&self, draw: Draw) -> Vec4 {
         (**self).draw_4d(draw)
     }
 }
 
-/// The start of a domain tree, from [`PixelSampler::root`].
+/// The start of a domain tree, from [`PixelSamplerHooks::root`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Root {
     /// The root key: [`Domain::branch`] and every draw's `stream` derive
@@ -303,7 +321,7 @@ pub struct Root {
 /// What one draw of a [`Domain`] hands its sampler.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Draw {
-    /// The sample index within its set, after [`PixelSampler::locate`].
+    /// The sample index within its set, after [`PixelSamplerHooks::locate`].
     pub index: u32,
     /// The sampler's pixel state, [`Root::pixel_state`].
     pub pixel_state: u32,

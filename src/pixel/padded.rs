@@ -3,7 +3,7 @@
 
 use glam::{Vec2, Vec3, Vec4};
 
-use super::{Draw, PixelSampler, Root};
+use super::{Draw, PixelSampler, PixelSamplerHooks, Root};
 use crate::primitives::salt;
 use crate::traits::{DomainSampler, Sampler2D};
 
@@ -99,7 +99,9 @@ impl<S: DomainSampler + Send + Sync> PixelSampler for Padded<S> {
             Some(n)
         }
     }
+}
 
+impl<S: DomainSampler + Send + Sync> PixelSamplerHooks for Padded<S> {
     /// The key: `(y, x)` packed into 64 bits, xored with the frame times
     /// an odd 64-bit constant (no hash: every draw mixes the key). Distinct
     /// pixels of one frame get distinct keys, and a frame's keys differ

@@ -4,7 +4,7 @@
 use glam::{Vec2, Vec3, Vec4};
 
 use super::padded::packed_root;
-use super::{Draw, PixelSampler, Root};
+use super::{Draw, PixelSampler, PixelSamplerHooks, Root};
 use crate::primitives::{child_key, hash_combine, locate_pass, salt};
 use crate::traits::SamplerNd;
 
@@ -141,7 +141,9 @@ impl<S: SamplerNd + Send + Sync> PixelSampler for PaddedNd<S> {
     fn samples_per_pixel(&self) -> Option<u32> {
         Some(self.sampler.len().wrapping_mul(self.passes))
     }
+}
 
+impl<S: SamplerNd + Send + Sync> PixelSamplerHooks for PaddedNd<S> {
     /// [`Padded`](crate::Padded)'s root: the pixel packed into the key,
     /// xored with a multiple of the frame.
     #[inline(always)]

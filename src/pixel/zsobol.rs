@@ -1,6 +1,6 @@
 use glam::{Vec2, Vec3, Vec4};
 
-use super::{Draw, PixelSampler, Root};
+use super::{Draw, PixelSampler, PixelSamplerHooks, Root};
 use crate::error::Error;
 use crate::primitives::morton::morton;
 use crate::primitives::{
@@ -64,7 +64,7 @@ const INDEX_BITS: u32 = 32;
 ///   random subset of the next block. Each pass of the pass rule (indices
 ///   `p spp .. (p + 1) spp`, see Limits) is a complete net, keyed by `p`:
 ///   a renderer's progressive passes of `spp` samples are nets each
-///   ([`DomainSampler`](crate::DomainSampler)'s section on which ranges
+///   ([`DomainSampler`](crate::implement::DomainSampler)'s section on which ranges
 ///   are nets).
 /// - More: for `k` levels of the Morton hierarchy, the `4^k` pixels of an
 ///   aligned `2^k x 2^k` square together hold a (0, m + 2k, 2)-net.
@@ -247,7 +247,9 @@ impl PixelSampler for ZSobol {
     fn samples_per_pixel(&self) -> Option<u32> {
         Some(1 << self.log2_spp)
     }
+}
 
+impl PixelSamplerHooks for ZSobol {
     /// The key from the frame (and the tile, off the film), the pixel
     /// state the Morton block start.
     #[inline(always)]

@@ -87,7 +87,7 @@ pub fn permute(index: u32, len: u32, pattern: u32) -> u32 {
 /// `n - 2^m` indices of a prefix `2^m < n < 2^(m+1)` past its last power of
 /// two to a uniformly random subset of the next block. A sequence whose
 /// aligned blocks were nets keeps nets on the kept ranges only
-/// ([`DomainSampler`](crate::DomainSampler) says what a progressive
+/// ([`DomainSampler`](crate::implement::DomainSampler) says what a progressive
 /// renderer should use; `docs/quality.md`, Prefixes between powers of two,
 /// measures what the prefixes in between lose).
 ///

@@ -175,7 +175,8 @@ macro_rules! sampler_kinds {
 /// time and pays one dispatch per `visit`, not one per sample.
 ///
 /// ```
-/// use wellspread::{DomainSampler, SamplerKind, SamplerVisitor};
+/// use wellspread::implement::DomainSampler;
+/// use wellspread::{SamplerKind, SamplerVisitor};
 /// struct FirstDraw;
 /// impl SamplerVisitor for FirstDraw {
 ///     type Output = f32;

@@ -74,7 +74,7 @@ mod tests {
     use std::string::String;
 
     use super::*;
-    use crate::pixel::SearchedColumns;
+    use crate::pixel::blue_noise::SearchedColumns;
     use crate::pixel::blue_noise::sealed::Shift;
     use crate::primitives::salt;
     use crate::samplers::sequence::sobol_4d::dimensions_2_3_reversed;

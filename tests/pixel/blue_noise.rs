@@ -7,12 +7,11 @@
 //! margins below say how far each figure sits from its bound.
 
 use proptest::prelude::*;
+use wellspread::blue_noise::{ExplicitColumns, PixelColumns, SearchedColumns};
 use wellspread::glam::Vec2;
 use wellspread::metrics::is_net_base2;
 use wellspread::primitives::hash_u32;
-use wellspread::{
-    BlueNoise, Error, ExplicitColumns, Padded, PixelColumns, PixelSampler, SearchedColumns, Sobol,
-};
+use wellspread::{BlueNoise, Error, Padded, PixelSampler, Sobol};
 
 use crate::{branch_pass, other_aligned_blocks_that_are_nets};
 

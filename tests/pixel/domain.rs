@@ -2,12 +2,13 @@
 
 use proptest::prelude::*;
 use wellspread::glam::{Vec2, Vec4};
+use wellspread::implement::{Draw, PixelSamplerHooks, Root};
 use wellspread::metrics::{is_net_base2, net_t_value};
 use wellspread::{
     AnyPixelSampler, AnySampler, BlueMultiJittered, BlueNoise, CorrelatedMultiJittered, Domain,
-    Draw, Error, Halton, Hammersley, Jittered, LatinHypercube, MultiJittered, NRooks,
-    OrthogonalArray, Padded, PaddedNd, PixelSampler, PixelSamplerKind, Pmj02, Random, Regular,
-    Root, SamplerKind, Sobol, ZSobol,
+    Error, Halton, Hammersley, Jittered, LatinHypercube, MultiJittered, NRooks, OrthogonalArray,
+    Padded, PaddedNd, PixelSampler, PixelSamplerKind, Pmj02, Random, Regular, SamplerKind, Sobol,
+    ZSobol,
 };
 
 /// Every pixel sampler at `spp` on a 64 x 64 film, frame `frame`.
@@ -612,9 +613,13 @@ fn a_new_pixel_sampler_plugs_in_with_three_methods() {
         fn samples_per_pixel(&self) -> Option<u32> {
             self.0.samples_per_pixel()
         }
+    }
+
+    impl PixelSamplerHooks for Mine {
         fn root(&self, pixel: [u32; 2]) -> Root {
             self.0.root(pixel)
         }
+
         fn draw_2d(&self, draw: Draw) -> Vec2 {
             self.0.draw_2d(draw)
         }

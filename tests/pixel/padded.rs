@@ -3,8 +3,9 @@
 //! padded sequences that are nets, and the ones that are not.
 
 use wellspread::glam::Vec2;
+use wellspread::implement::{Draw, PixelSamplerHooks, Root};
 use wellspread::primitives::{hash_u32, owen_scramble, u32_to_unit_f32};
-use wellspread::{Domain, Draw, Padded, PixelSampler, Pmj02, Root, Sampler2D, Sobol};
+use wellspread::{Domain, Padded, PixelSampler, Pmj02, Sampler2D, Sobol};
 
 use crate::{
     branch_pass, dependence, first_documented_range_not_a_net, other_aligned_blocks_that_are_nets,
@@ -127,16 +128,18 @@ impl<P: PixelSampler> PixelSampler for Reused<P> {
         self.0.samples_per_pixel()
     }
 
+    fn sample_pixel(&self, pixel: [u32; 2], index: u32, _pair: u32) -> Vec2 {
+        self.0.sample_pixel(pixel, index, 0)
+    }
+}
+
+impl<P: PixelSampler> PixelSamplerHooks for Reused<P> {
     fn root(&self, pixel: [u32; 2]) -> Root {
         self.0.root(pixel)
     }
 
     fn draw_2d(&self, draw: Draw) -> Vec2 {
         self.0.draw_2d(draw)
-    }
-
-    fn sample_pixel(&self, pixel: [u32; 2], index: u32, _pair: u32) -> Vec2 {
-        self.0.sample_pixel(pixel, index, 0)
     }
 }
 

@@ -173,7 +173,7 @@ pub(crate) const fn dimensions_2_3_reversed(index: u32) -> (u32, u32) {
 ///   ([`prefix_shuffle`](crate::primitives::prefix_shuffle)), which keeps
 ///   every prefix the same set of points.
 /// - Point `index` of pattern `pattern` is
-///   [`DomainSampler::domain_4d`](crate::DomainSampler::domain_4d) of
+///   [`DomainSampler::domain_4d`](crate::implement::DomainSampler::domain_4d) of
 ///   [`Sobol`](crate::Sobol) at the stream `mix64(pattern ^ salt)`: one
 ///   formula for both.
 ///
