@@ -154,8 +154,8 @@ pub mod wgsl;
 
 pub use error::{Error, UnknownName};
 pub use pixel::{
-    AnyPixelSampler, BlueNoise, Domain, Padded, PaddedNd, PixelSampler, PixelSamplerKind,
-    PixelSamplerVisitor, ZSobol,
+    AnyPixelSampler, BlueNoise, CameraSample, Domain, Padded, PaddedNd, PixelSampler,
+    PixelSamplerKind, PixelSamplerVisitor, ZSobol,
 };
 pub use primitives::pattern_seed;
 

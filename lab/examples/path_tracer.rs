@@ -14,8 +14,9 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use clap::Parser;
-use wellspread::glam::{Vec2, Vec3};
-use wellspread::{Domain, PixelSampler, PixelSamplerKind, warp};
+use wellspread::filter::GaussianFilter;
+use wellspread::glam::Vec3;
+use wellspread::{CameraSample, Domain, PixelSampler, PixelSamplerKind, warp};
 
 #[path = "shared/cli.rs"]
 pub mod shared;
@@ -91,19 +92,17 @@ fn intersect(origin: Vec3, dir: Vec3) -> Option<(f32, Vec3, Vec3, bool)> {
     .min_by(|a, b| a.0.total_cmp(&b.0))
 }
 
-/// One path of the pixel sample whose root domain is `root`: every random
-/// number comes from it or from its children. The domain is 32 bytes and
+/// One path of the pixel sample whose root domain is `root`, through the
+/// film and lens point of its `camera` sample: every random number comes
+/// from the domain or from its children. The domain is 32 bytes and
 /// borrows the sampler (`PixelSampler::start`); a routine that draws takes
 /// it by `&mut`. Generic over the sampler (`S: PixelSampler + Copy`, Copy
 /// for `branch` and `split`), so `Domain<&AnyPixelSampler>` and a concrete
 /// `Domain<&Padded<Sobol>>` both fit.
-fn radiance<S: PixelSampler + Copy>(root: &mut Domain<S>, pixel: [u32; 2]) -> Vec3 {
-    // Film and lens are one 4D draw: coupled, they stay stratified together.
-    let film_lens = root.next_4d();
-    let film = (Vec2::new(pixel[0] as f32, pixel[1] as f32) + Vec2::new(film_lens.x, film_lens.y))
-        / SIZE[1] as f32;
+fn radiance<S: PixelSampler + Copy>(root: &mut Domain<S>, camera: &CameraSample) -> Vec3 {
+    let film = camera.film / SIZE[1] as f32;
     let aspect = SIZE[0] as f32 / SIZE[1] as f32;
-    let lens = APERTURE * warp::concentric_disk(Vec2::new(film_lens.z, film_lens.w));
+    let lens = APERTURE * camera.lens;
     let focus = EYE + FOCUS * Vec3::new(0.8 * (film.x - 0.5 * aspect), 0.8 * (0.5 - film.y), -1.0);
     let mut origin = EYE + lens.extend(0.0);
     let mut dir = (focus - origin).normalize();
@@ -157,15 +156,23 @@ fn main() -> ExitCode {
     }) else {
         return ExitCode::from(2);
     };
+    let filter = GaussianFilter::new(1.5, 0.5).expect("pbrt-v4's default Gaussian");
     let mut bytes = Vec::with_capacity((SIZE[0] * SIZE[1] * 3) as usize);
     // Gamma 2.2, clamped to 8 bits.
     let encode = |c: f32| (255.0 * c.max(0.0).powf(1.0 / 2.2)).min(255.0) as u8;
     for y in 0..SIZE[1] {
         for x in 0..SIZE[0] {
-            let sum: Vec3 = (0..args.spp)
-                .map(|i| radiance(&mut sampler.start([x, y], i), [x, y]))
-                .sum();
-            bytes.extend((sum / args.spp as f32).to_array().map(encode));
+            let (mut sum, mut weights) = (Vec3::ZERO, 0.0);
+            for i in 0..args.spp {
+                let mut d = sampler.start([x, y], i);
+                // Film (through the filter) and lens from one 4D draw,
+                // stratified together, then the time.
+                let camera = d.camera_sample([x, y], &filter);
+                sum += camera.filter_weight * radiance(&mut d, &camera);
+                weights += camera.filter_weight;
+            }
+            // pbrt's weighted average: sum(w L) / sum(w).
+            bytes.extend((sum / weights).to_array().map(encode));
         }
     }
     if let Err(e) = write_png(&args.out, &bytes) {

@@ -5,6 +5,7 @@
 //! O(1).
 
 pub(crate) mod blue_noise;
+mod camera;
 mod domain;
 mod kind;
 mod padded;
@@ -16,6 +17,7 @@ mod zsobol;
 use glam::{Vec2, Vec3, Vec4};
 
 pub use blue_noise::BlueNoise;
+pub use camera::CameraSample;
 pub use domain::Domain;
 pub use kind::{AnyPixelSampler, PixelSamplerKind, PixelSamplerVisitor};
 pub use padded::Padded;

@@ -6,6 +6,7 @@
 //! share, are below.
 
 mod blue_noise;
+mod camera;
 mod domain;
 mod independence;
 mod padded;
