@@ -1,89 +1,81 @@
-//! Well-distributed 2D sample patterns for anti-aliasing, with random access.
+//! Sample patterns for renderers: stratified, low-discrepancy and
+//! blue-noise pixel samplers with O(1) random access, the warps and
+//! filters that keep their stratification, and the metrics that measure
+//! them.
 //!
-//! A renderer shoots several rays per pixel and averages them; where those
-//! rays go decides how much aliasing and noise the image has. wellspread
-//! generates the patterns graphics engineers know (regular, random,
-//! jittered, n-rooks, multi-jittered) and better ones (correlated
-//! multi-jitter, the low-discrepancy [`Hammersley`] set of at most 2^24
-//! points, and the progressive sequences [`Sobol`], [`Pmj02`] and
-//! [`Halton`]), and measures them ([`metrics`]). The sequences
-//! ([`Sequence2D`]) accept any index below 2^32 and keep their guarantees
-//! at every power-of-two prefix.
+//! # A renderer's loop
 //!
-//! Every sampler kind implements [`Sampler2D`]: sample `index` of pattern
-//! `pattern` in O(1), with no tables and no shared state, so any thread
-//! rendering any tile gets the same sample. Every coordinate is in `[0, 1)`
-//! after f32 rounding.
-//!
-//! Point sets whose guarantees span more dimensions implement [`SamplerNd`]
-//! (any coordinate of any sample in O(1)): [`LatinHypercube`] (every 1D
-//! projection stratified, any number of dimensions) and
-//! [`OrthogonalArray`] (every 2D, 3D or 4D projection stratified, at
-//! `q^t` samples for a prime power `q`).
+//! Pick a pixel sampler by name, start a [`Domain`] per pixel sample, take
+//! the camera sample first (film through the filter, lens, time), then
+//! give each purpose its own keyed branch:
 //!
 //! ```
-//! use wellspread::{CorrelatedMultiJittered, Sampler2D, pattern_seed};
+//! use wellspread::filter::GaussianFilter;
+//! use wellspread::{PixelSampler, PixelSamplerKind, warp};
 //!
-//! let sampler = CorrelatedMultiJittered::new(16)?;
-//! let (px, py) = (120, 45);
-//! let pattern = pattern_seed(px, py, 0, 0);
-//! for index in 0..sampler.len() {
-//!     let offset = sampler.sample(index, pattern);
-//!     assert!(offset.x < 1.0 && offset.y < 1.0);
-//!     let _film = (px as f32 + offset.x, py as f32 + offset.y);
+//! const BOUNCE: u32 = 1; // domain keys: any u32, one per purpose
+//!
+//! let sampler = "sobol".parse::<PixelSamplerKind>()?.build(16, [64, 48], 0)?;
+//! let filter = GaussianFilter::new(1.5, 0.5)?;
+//! let pixel = [12, 34];
+//! let (mut sum, mut weights) = (0.0, 0.0);
+//! for index in 0..16 {
+//!     let mut d = sampler.start(pixel, index); // 32 bytes, borrows the sampler
+//!     let camera = d.camera_sample(pixel, &filter);
+//!     let mut radiance = 0.0;
+//!     for b in 0..4 {
+//!         // Bounce b's draws never depend on what the bounces before it drew.
+//!         let mut bounce = d.branch(BOUNCE).branch(b);
+//!         let direction = warp::cosine_hemisphere(bounce.next_2d());
+//!         radiance += direction.z * (1.0 + camera.lens.x) * 0.25;
+//!     }
+//!     sum += camera.filter_weight * radiance;
+//!     weights += camera.filter_weight;
 //! }
+//! assert!((sum / weights).is_finite());
 //! # Ok::<(), wellspread::Error>(())
 //! ```
 //!
-//! # Pixel loops
+//! What a renderer uses:
 //!
-//! A renderer asks for samples by pixel, sample index and dimension pair
-//! (film position, lens, time, light, ...): that is [`PixelSampler`].
-//! [`Padded`] makes one of any [`Sampler2D`] that implements
-//! [`DomainSampler`](implement::DomainSampler) (every sampler of the crate does; for one of your own,
-//! an empty `impl DomainSampler for MySampler {}` takes the defaults), each
-//! pixel and dimension pair an independent pattern from [`pattern_seed`];
-//! [`ZSobol`] (at its power-of-two count) and [`BlueNoise`] (at every
-//! prefix, any count) spread the error across pixels as blue noise. [`PixelSampler::start`]
-//! makes a [`Domain`], the 32-byte state of one pixel sample that hands out
-//! draws of one to four dimensions and keyed child domains
-//! ([`PixelSampler`] shows a path tracer's loop), and [`warp`] maps those
-//! draws onto disks, hemispheres, spheres, triangles, lights (by solid
-//! angle) and discrete choices (uniform and weighted); [`filter`] draws the
-//! film offset from a pixel reconstruction filter (tent, Gaussian,
-//! Mitchell-Netravali, Lanczos, ...) through a monotone map, so the strata
-//! survive; [`PixelSamplerKind`] picks a sampler by name:
+//! - [`PixelSamplerKind`] and [`AnyPixelSampler`]: every pixel sampler by
+//!   name, built for a sample count and a film. [`Padded`] makes one of
+//!   any pattern below (an independent pattern per pixel, frame and
+//!   draw); [`ZSobol`] and [`BlueNoise`] spread the error across pixels as
+//!   blue noise; [`PaddedNd`] reads an [`OrthogonalArray`] or a
+//!   [`LatinHypercube`] across a domain's draws.
+//! - [`Domain`]: one pixel sample's draws, 1D to 4D, keyed branches and
+//!   splits, and [`camera_sample`](Domain::camera_sample). Its docs say
+//!   which draw to use for what; [`PixelSampler`] states the edges.
+//! - [`warp`]: the unit square onto disks, hemispheres, spheres,
+//!   triangles, lights (by solid angle) and discrete choices, with pdfs
+//!   and inverses; [`filter`]: pixel reconstruction filters, sampled
+//!   through a monotone map so the strata survive.
+//! - [`metrics`]: exact discrepancies, distances, spectra and
+//!   stratification checks for any `&[Vec2]`; [`Error`]: what was wrong
+//!   with an input, for every constructor and metric.
+//!
+//! A new sampler implements the hooks in [`implement`].
+//!
+//! # The patterns underneath
+//!
+//! Every 2D pattern implements [`Sampler2D`]: sample `index` of pattern
+//! `pattern` in O(1), with no tables and no shared state, so any thread
+//! rendering any tile gets the same sample. Every coordinate is in `[0, 1)`
+//! after f32 rounding. The kinds are the ones graphics engineers know
+//! (regular, random, jittered, n-rooks, multi-jittered) and better ones
+//! (correlated multi-jitter, blue multi-jitter, the [`Hammersley`] set and
+//! the progressive sequences [`Sobol`], [`Pmj02`] and [`Halton`], which
+//! accept any index below 2^32 and keep their guarantees at every
+//! power-of-two prefix); [`SamplerKind`] names them. Sets whose
+//! guarantees span more dimensions implement [`SamplerNd`].
 //!
 //! ```
-//! use wellspread::{Padded, PixelSampler, Sobol, ZSobol};
+//! use wellspread::{CorrelatedMultiJittered, Sampler2D, glam::Vec2, metrics};
 //!
-//! /// Box-filtered render of a toy scene seen through a lens, lit by an
-//! /// area light: three dimension pairs per sample.
-//! fn render(sampler: &(impl PixelSampler + Copy), width: u32, height: u32) -> Vec<f32> {
-//!     let spp = sampler.samples_per_pixel().unwrap_or(16);
-//!     let mut image = Vec::with_capacity((width * height) as usize);
-//!     for py in 0..height {
-//!         for px in 0..width {
-//!             let mut sum = 0.0;
-//!             for index in 0..spp {
-//!                 let mut d = sampler.start([px, py], index);
-//!                 let film = d.next_2d(); // offset in the pixel
-//!                 let lens = d.next_2d(); // point on the lens
-//!                 let light = d.next_2d(); // point on the light
-//!                 let (x, y) = (px as f32 + film.x, py as f32 + film.y);
-//!                 let blur = 0.5 * (lens.x - 0.5);
-//!                 sum += ((x + blur) * 0.3).sin().abs() * (y * 0.2).cos().abs() * (0.5 + light.y);
-//!             }
-//!             image.push(sum / spp as f32);
-//!         }
-//!     }
-//!     image
-//! }
-//!
-//! let (width, height) = (32, 24);
-//! let blue = render(&ZSobol::new(16, [width, height], 0)?, width, height);
-//! let white = render(&Padded::new(Sobol::new(16)?, 0), width, height);
-//! assert_eq!(blue.len(), white.len());
+//! let mut points = vec![Vec2::ZERO; 256];
+//! CorrelatedMultiJittered::new(256)?.fill(7, &mut points); // pattern 7
+//! assert!(metrics::is_latin(&points)? && metrics::is_stratified(&points, 16, 16)?);
 //! # Ok::<(), wellspread::Error>(())
 //! ```
 //!
