@@ -357,7 +357,9 @@ pub fn parse(
     let after_help = format!(
         "Samplers: {}\n(the library's pixel samplers, any case or alias such as cmj; in cornell\n\
          each draws film and lens as one 4D point, and sobol-pairs, cornell only, is\n\
-         sobol drawing them as two 2D pairs)\n\n{HELP}\n\n{}",
+         sobol drawing them as two 2D pairs; pcg32, cornell only, is not the crate:\n\
+         rand_pcg's Pcg32 per pixel sample, every number of a path in call order,\n\
+         the baseline of the ratio table)\n\n{HELP}\n\n{}",
         names.join(" "),
         shared::EXIT_CODES
     );

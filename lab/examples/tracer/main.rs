@@ -17,7 +17,9 @@
 //! library's [`PixelSampler`](wellspread::PixelSampler), by the names of
 //! [`PixelSamplerKind`](wellspread::PixelSamplerKind): the library's
 //! samplers padded across pixels, `zsobol` and `blue-noise`. The path-traced `cornell`
-//! draws every number through a [`Domain`](wellspread::Domain).
+//! draws every number through a [`Domain`](wellspread::Domain), or, for the
+//! baseline `pcg32` that is not the crate, from one `rand_pcg::Pcg32` per
+//! pixel sample.
 //! `--help` lists the files it writes.
 //!
 //! The modules: `cli` (options and their checks), `render` (samplers,
@@ -58,6 +60,7 @@ use crate::output::{
     Crop, Picture, Series, Tile, contact_sheet, spectrum_svg, stack_rows, trade_plot_svg,
     viewing_zoom,
 };
+use crate::path::FrameSampler;
 use crate::render::{FILM_DIMENSION, Filter, FilterMode, Image, TracerSampler, render};
 use crate::report::{
     Row, docs_block_name, docs_page_from, json_report, low_frequency_power, markdown_tables,
@@ -445,7 +448,7 @@ impl<'a> SceneJob<'a> {
         let mut first: Option<(Image, f64, f64)> = None;
         let frames = options.frames_for(self.kind);
         for (offset, frame) in options.frame_range(self.kind).enumerate() {
-            let frame_sampler = match sampler.build(spp, width, height, frame) {
+            let frame_sampler = match sampler.frame(spp, width, height, frame) {
                 Ok(frame_sampler) => frame_sampler,
                 Err(e) => {
                     let label = &self.label;
@@ -457,17 +460,22 @@ impl<'a> SceneJob<'a> {
                     return Ok(None);
                 }
             };
-            let draw = || match &self.scene {
-                Built::Film(scene) => render(
+            let draw = || match (&self.scene, frame_sampler) {
+                (Built::Film(scene), FrameSampler::Pixel(pixels)) => render(
                     scene,
                     width,
                     height,
-                    &frame_sampler,
+                    &pixels,
                     FILM_DIMENSION,
                     self.filter,
                     self.mode,
                 ),
-                Built::PathTraced => path::render(
+                (Built::Film(_), FrameSampler::Pcg32(_)) => {
+                    unreachable!(
+                        "pcg32 renders the path-traced scene only (TracerSampler::renders)"
+                    )
+                }
+                (Built::PathTraced, frame_sampler) => path::render(
                     width,
                     height,
                     spp,

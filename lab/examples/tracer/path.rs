@@ -16,8 +16,16 @@
 //! cached under `out/` in a file named after a fingerprint of the scene and
 //! of the path tracer as the reference runs it, so a change to either
 //! recomputes it.
+//!
+//! The baseline `pcg32` is not the crate: [`Pcg32Source`] starts one
+//! `rand_pcg::Pcg32` per pixel sample and frame, and the same path code
+//! draws every number from it in call order. [`render`] picks the source
+//! once per frame ([`FrameSampler`]); `render_cornell` is generic over it,
+//! so neither side pays for the other in its draws.
 
-use wellspread::glam::Vec4;
+use rand::{Rng as _, SeedableRng as _};
+use rand_pcg::Pcg32;
+use wellspread::glam::{Vec2, Vec4};
 use wellspread::{AnyPixelSampler, Domain, PixelSampler, PixelSamplerKind, SamplerKind};
 
 use crate::cornell::{Light, PathSamples, SampleSource, render_cornell};
@@ -85,27 +93,113 @@ impl<P: PixelSampler + Copy> PathSamples for DomainSamples<P> {
     }
 }
 
+/// What one frame of the path-traced scene draws from: a library pixel
+/// sampler, through its [`Domain`]s, or the `pcg32` baseline.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum FrameSampler {
+    Pixel(AnyPixelSampler),
+    Pcg32(Pcg32Source),
+}
+
+/// The baseline that is not the crate, as a renderer's own random-number
+/// path does it: sample `index` of `pixel` in frame `frame` gets a fresh
+/// `rand_pcg::Pcg32` seeded by hashing the three ([`Pcg32Source::seed`]),
+/// and the path draws every number from it in call order (film, lens, then
+/// per bounce light choice, light sample, BSDF, roulette).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Pcg32Source {
+    pub frame: u32,
+}
+
+impl Pcg32Source {
+    /// The `seed_from_u64` seed of sample `index` of `pixel`: the pixel,
+    /// then the index and frame, as two 64-bit words folded through
+    /// SplitMix64's finaliser (a bijection, so nearby samples get
+    /// unrelated seeds).
+    pub fn seed(&self, [x, y]: [u32; 2], index: u32) -> u64 {
+        let mix = |mut z: u64| {
+            z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+            z ^ (z >> 31)
+        };
+        let pixel = (u64::from(x) << 32) | u64::from(y);
+        let sample = (u64::from(index) << 32) | u64::from(self.frame);
+        mix(mix(pixel) ^ sample)
+    }
+}
+
+impl SampleSource for Pcg32Source {
+    type Samples = Pcg32Samples;
+
+    #[inline]
+    fn start(&self, pixel: [u32; 2], index: u32) -> Pcg32Samples {
+        Pcg32Samples(Pcg32::seed_from_u64(self.seed(pixel, index)))
+    }
+}
+
+/// One path's generator: every draw advances it, a branch is the stream
+/// where it is and hands it back through `rejoin`, so the path's numbers
+/// are the generator's in call order.
+#[derive(Clone, Debug)]
+pub struct Pcg32Samples(Pcg32);
+
+impl PathSamples for Pcg32Samples {
+    #[inline]
+    fn next_1d(&mut self) -> f32 {
+        self.0.random()
+    }
+
+    #[inline]
+    fn next_2d(&mut self) -> Vec2 {
+        let x = self.0.random();
+        Vec2::new(x, self.0.random())
+    }
+
+    #[inline]
+    fn film_lens(&mut self) -> Vec4 {
+        let film = self.next_2d();
+        let lens = self.next_2d();
+        Vec4::new(film.x, film.y, lens.x, lens.y)
+    }
+
+    #[inline]
+    fn branch(&self, _key: u32) -> Self {
+        self.clone()
+    }
+
+    #[inline]
+    fn rejoin(&mut self, child: Self) {
+        *self = child;
+    }
+}
+
 /// One frame of the Cornell box: samples `0..spp` of every pixel of
-/// `sampler`, film and lens drawn as `film_lens` says, the light sampled
-/// as `light` says, box filter.
+/// `sampler`, film and lens drawn as `film_lens` says (a library
+/// sampler's), the light sampled as `light` says, box filter.
 pub fn render(
     width: u32,
     height: u32,
     spp: u32,
-    sampler: AnyPixelSampler,
+    sampler: FrameSampler,
     film_lens: FilmLens,
     light: Light,
 ) -> Image {
-    // Borrowed: each path's domain is 32 bytes (owned, 112).
-    let source = Domains {
-        sampler: &sampler,
-        film_lens,
-        root_branch: None,
+    let pixels = match sampler {
+        FrameSampler::Pixel(sampler) => {
+            // Borrowed: each path's domain is 32 bytes (owned, 112).
+            let source = Domains {
+                sampler: &sampler,
+                film_lens,
+                root_branch: None,
+            };
+            render_cornell(width, height, spp, &source, light)
+        }
+        FrameSampler::Pcg32(source) => render_cornell(width, height, spp, &source, light),
     };
     Image {
         width,
         height,
-        pixels: render_cornell(width, height, spp, &source, light),
+        pixels,
     }
 }
 
@@ -178,8 +272,9 @@ mod tests {
     fn cornell_frames_are_bit_identical_for_one_and_two_threads() {
         let (one, two) = one_and_two_threads();
         let (width, height) = (24, 20);
+        // Every sampler, pcg32 included.
         for sampler in TracerSampler::all() {
-            let frame = sampler.build(4, width, height, 3).unwrap();
+            let frame = sampler.frame(4, width, height, 3).unwrap();
             let draw = || {
                 render(
                     width,
@@ -195,6 +290,53 @@ mod tests {
         }
         let a = one.install(fingerprint);
         assert_eq!(a, two.install(fingerprint));
+    }
+
+    /// A pcg32 path is one generator in call order: film and lens, then
+    /// each bounce's six numbers, continuing through every branch.
+    #[test]
+    fn pcg32_draws_every_number_of_a_path_from_one_stream_in_call_order() {
+        use crate::cornell::BOUNCE;
+        let source = Pcg32Source { frame: 7 };
+        let mut rng = Pcg32::seed_from_u64(source.seed([3, 4], 5));
+        let mut expected = |n: usize| -> Vec<f32> { (0..n).map(|_| rng.random()).collect() };
+        let mut root = source.start([3, 4], 5);
+        assert_eq!(root.film_lens().to_array().to_vec(), expected(4));
+        let mut bounces = root.branch(BOUNCE);
+        for bounce in 0..3 {
+            let mut domain = bounces.branch(bounce);
+            let (choice, light) = (domain.next_1d(), domain.next_2d());
+            let (bsdf, roulette) = (domain.next_2d(), domain.next_1d());
+            bounces.rejoin(domain);
+            let drawn = [choice, light.x, light.y, bsdf.x, bsdf.y, roulette];
+            assert_eq!(drawn.to_vec(), expected(6), "bounce {bounce}");
+        }
+    }
+
+    #[test]
+    fn pcg32_seeds_differ_for_every_pixel_sample_and_frame() {
+        let mut seeds = std::collections::HashSet::new();
+        for frame in 0..4 {
+            let source = Pcg32Source { frame };
+            for (x, y, index) in
+                (0..16).flat_map(|x| (0..16).flat_map(move |y| (0..16).map(move |i| (x, y, i))))
+            {
+                seeds.insert(source.seed([x, y], index));
+            }
+        }
+        assert_eq!(seeds.len(), 4 * 16 * 16 * 16);
+        // A frame of pcg32 is not the next frame's.
+        let frame = |frame| {
+            render(
+                8,
+                8,
+                4,
+                FrameSampler::Pcg32(Pcg32Source { frame }),
+                FilmLens::Joint,
+                Light::SolidAngle,
+            )
+        };
+        assert_ne!(frame(0), frame(1));
     }
 
     #[test]

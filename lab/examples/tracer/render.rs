@@ -10,9 +10,10 @@ use std::fmt;
 use std::str::FromStr;
 
 use rayon::prelude::*;
-use wellspread::{AnyPixelSampler, PixelSampler, PixelSamplerKind, SamplerKind};
+use wellspread::{PixelSampler, PixelSamplerKind, SamplerKind};
 
-use crate::scenes::{Rgb, Scene, SceneKind};
+use crate::path::{FrameSampler, Pcg32Source};
+use crate::scenes::{Built, Rgb, Scene, SceneKind};
 
 /// A linear-RGB image, row-major, row 0 at the top.
 #[derive(Clone, Debug, PartialEq)]
@@ -230,8 +231,9 @@ pub enum FilmLens {
 
 /// A sampler as the command line names it: one of the library's pixel
 /// samplers ([`PixelSamplerKind::all`], so a new one appears here by
-/// itself), or `sobol-pairs`, the control of the path-traced scene's
-/// 4D-versus-pairs comparison.
+/// itself), `sobol-pairs`, the control of the path-traced scene's
+/// 4D-versus-pairs comparison, or `pcg32`, the baseline that is not the
+/// crate.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum TracerSampler {
     /// `kind.build(spp, [width, height], frame)`. In the path-traced scene
@@ -241,6 +243,13 @@ pub enum TracerSampler {
     /// drawn as two `next_2d` pairs. The 2D scenes draw no lens, where it
     /// would be `sobol` again, so it renders only the path-traced one.
     SobolPairs,
+    /// Not the crate: what a renderer's own random-number path does, one
+    /// `rand_pcg::Pcg32` per pixel sample and frame, seeded by hashing
+    /// them, every number of the path drawn from it in call order
+    /// ([`Pcg32Source`]). The yardstick of the ratio table; the
+    /// path-traced scene only (the 2D scenes take their film positions
+    /// from a [`PixelSampler`]).
+    Pcg32,
 }
 
 /// `sobol`, the pixel sampler both sides of the 4D-versus-pairs rows use.
@@ -251,7 +260,7 @@ impl TracerSampler {
     pub fn all() -> Vec<TracerSampler> {
         PixelSamplerKind::all()
             .map(TracerSampler::Pixel)
-            .chain([TracerSampler::SobolPairs])
+            .chain([TracerSampler::SobolPairs, TracerSampler::Pcg32])
             .collect()
     }
 
@@ -260,39 +269,68 @@ impl TracerSampler {
         match self {
             TracerSampler::Pixel(kind) => kind.name(),
             TracerSampler::SobolPairs => "sobol-pairs",
+            TracerSampler::Pcg32 => "pcg32",
         }
     }
 
-    /// How the path-traced scene draws its film offset and lens point.
+    /// How the path-traced scene draws its film offset and lens point
+    /// (`pcg32` draws four numbers in a row either way).
     pub fn film_lens(self) -> FilmLens {
         match self {
-            TracerSampler::Pixel(_) => FilmLens::Joint,
+            TracerSampler::Pixel(_) | TracerSampler::Pcg32 => FilmLens::Joint,
             TracerSampler::SobolPairs => FilmLens::Pairs,
         }
     }
 
-    /// Whether `scene` renders with this sampler: every scene but
-    /// `sobol-pairs`, which differs from `sobol` only in the lens.
+    /// Whether `scene` renders with this sampler: the library's samplers
+    /// every scene; `sobol-pairs`, which differs from `sobol` only in the
+    /// lens, and `pcg32`, which is no pixel sampler, the path-traced one.
     pub fn renders(self, scene: SceneKind) -> bool {
         match self {
             TracerSampler::Pixel(_) => true,
             TracerSampler::SobolPairs => scene.has_lens(),
+            TracerSampler::Pcg32 => matches!(scene.build(1, 1), Built::PathTraced),
         }
     }
 
-    /// The pixel sampler for `spp` samples per pixel on a `width x height`
-    /// film at frame `frame`.
+    /// The library pixel sampler this one builds; `None` for `pcg32`.
+    pub fn pixel_kind(self) -> Option<PixelSamplerKind> {
+        match self {
+            TracerSampler::Pixel(kind) => Some(kind),
+            TracerSampler::SobolPairs => Some(PixelSamplerKind::Padded(SamplerKind::Sobol)),
+            TracerSampler::Pcg32 => None,
+        }
+    }
+
+    /// What frame `frame` renders with at `spp` samples per pixel on a
+    /// `width x height` film: the library pixel sampler, or `pcg32`'s
+    /// generators for that frame (any count).
+    pub fn frame(
+        self,
+        spp: u32,
+        width: u32,
+        height: u32,
+        frame: u32,
+    ) -> Result<FrameSampler, wellspread::Error> {
+        match self.pixel_kind() {
+            Some(kind) => kind
+                .build(spp, [width, height], frame)
+                .map(FrameSampler::Pixel),
+            None => Ok(FrameSampler::Pcg32(Pcg32Source { frame })),
+        }
+    }
+
+    /// The library pixel sampler of [`frame`](Self::frame), for the tests
+    /// that render a library sampler only. Panics for `pcg32`.
+    #[cfg(test)]
     pub fn build(
         self,
         spp: u32,
         width: u32,
         height: u32,
         frame: u32,
-    ) -> Result<AnyPixelSampler, wellspread::Error> {
-        let kind = match self {
-            TracerSampler::Pixel(kind) => kind,
-            TracerSampler::SobolPairs => PixelSamplerKind::Padded(SamplerKind::Sobol),
-        };
+    ) -> Result<wellspread::AnyPixelSampler, wellspread::Error> {
+        let kind = self.pixel_kind().expect("pcg32 builds no library sampler");
         kind.build(spp, [width, height], frame)
     }
 }
@@ -309,8 +347,10 @@ impl FromStr for TracerSampler {
     /// A name from [`TracerSampler::all`], or any name or alias the
     /// library's [`PixelSamplerKind`] parses (any case, `cmj`, ...).
     fn from_str(name: &str) -> Result<Self, Self::Err> {
-        if name == TracerSampler::SobolPairs.name() {
-            return Ok(TracerSampler::SobolPairs);
+        for lab in [TracerSampler::SobolPairs, TracerSampler::Pcg32] {
+            if name == lab.name() {
+                return Ok(lab);
+            }
         }
         name.parse::<PixelSamplerKind>()
             .map(TracerSampler::Pixel)
@@ -933,10 +973,14 @@ mod sampler_tests {
         for kind in &all {
             assert_eq!(kind.name().parse::<TracerSampler>(), Ok(*kind));
         }
-        // Every pixel sampler of the library, each once, then sobol-pairs.
+        // Every pixel sampler of the library, each once, then sobol-pairs
+        // and pcg32.
         let pixel: Vec<TracerSampler> = PixelSamplerKind::all().map(TracerSampler::Pixel).collect();
         assert_eq!(all[..pixel.len()], pixel[..]);
-        assert_eq!(all[pixel.len()..], [TracerSampler::SobolPairs]);
+        assert_eq!(
+            all[pixel.len()..],
+            [TracerSampler::SobolPairs, TracerSampler::Pcg32]
+        );
         // The library's aliases and case.
         assert_eq!(
             "CMJ".parse(),
@@ -954,6 +998,10 @@ mod sampler_tests {
     fn sobol_pairs_renders_only_where_there_is_a_lens() {
         for scene in SceneKind::ALL {
             assert_eq!(TracerSampler::SobolPairs.renders(scene), scene.has_lens());
+            assert_eq!(
+                TracerSampler::Pcg32.renders(scene),
+                scene == SceneKind::Cornell
+            );
             assert!(SOBOL.renders(scene));
         }
         assert_eq!(TracerSampler::SobolPairs.film_lens(), FilmLens::Pairs);

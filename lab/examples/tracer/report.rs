@@ -148,16 +148,124 @@ pub fn markdown_tables(options: &Options, rows: &[Row]) -> String {
             let _ = writeln!(text, "{line}");
         }
     }
-    if let Some(claim) = versus_random(rows) {
-        let _ = writeln!(text, "\n{claim}");
-    }
-    if let Some(table) = zsobol_versus_sobol(rows) {
-        let _ = writeln!(text, "\n{table}");
-    }
-    if let Some(table) = joint_versus_pairs(rows) {
-        let _ = writeln!(text, "\n{table}");
+    let sections = [
+        versus_random(rows),
+        zsobol_versus_sobol(rows),
+        joint_versus_pairs(rows),
+        versus_pcg32(rows),
+    ];
+    for section in sections.into_iter().flatten() {
+        // One blank line before each, whatever newlines it starts or ends with.
+        let _ = writeln!(text, "\n{}", section.trim_matches('\n'));
     }
     text
+}
+
+/// A row's figures over a baseline row's: RMSE, time per frame, and
+/// RMSE^2 x time, the time to an equal error where the error falls as
+/// 1 / sqrt(time) (below 1 where the row is ahead).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Ratios {
+    rmse: f64,
+    time: f64,
+    efficiency: f64,
+}
+
+impl Ratios {
+    fn of(row: &Row, baseline: &Row) -> Self {
+        let rmse = row.rmse / baseline.rmse;
+        let time = row.seconds / baseline.seconds;
+        Self {
+            rmse,
+            time,
+            efficiency: rmse * rmse * time,
+        }
+    }
+}
+
+/// Every sampler against `pcg32`, the baseline that is not the crate (a
+/// renderer's own `rand_pcg::Pcg32` per pixel sample), per scene and size
+/// where it was rendered: RMSE, time and RMSE^2 x time over pcg32's at
+/// each count, then which sampler wins per unit of time at each count
+/// and by how much. `None` unless pcg32 and another sampler were both
+/// rendered.
+fn versus_pcg32(rows: &[Row]) -> Option<String> {
+    let mut text = String::new();
+    for (scene, width, height) in jobs(rows) {
+        let here: Vec<&Row> = rows
+            .iter()
+            .filter(|r| (r.scene, r.width, r.height) == (scene, width, height))
+            .collect();
+        let mut samplers: Vec<TracerSampler> = Vec::new();
+        let mut spps: Vec<u32> = Vec::new();
+        for r in &here {
+            if r.sampler != TracerSampler::Pcg32 && !samplers.contains(&r.sampler) {
+                samplers.push(r.sampler);
+            }
+            if !spps.contains(&r.spp) {
+                spps.push(r.spp);
+            }
+        }
+        spps.sort_unstable();
+        let compared = |sampler: TracerSampler, spp: u32| {
+            let r = here.iter().find(|r| (r.sampler, r.spp) == (sampler, spp))?;
+            Some((r, Ratios::of(r, partner(rows, r, TracerSampler::Pcg32)?)))
+        };
+        if !samplers
+            .iter()
+            .any(|&s| spps.iter().any(|&spp| compared(s, spp).is_some()))
+        {
+            continue;
+        }
+        let _ = writeln!(
+            text,
+            "\n#### {scene} {width}x{height}: each sampler over pcg32 (`rand_pcg::Pcg32` per pixel sample, a renderer's own random numbers), below 1 where the sampler is ahead\n\n| sampler | spp | RMSE / pcg32 | time / pcg32 | RMSE^2 x time / pcg32 |\n| --- | ---: | ---: | ---: | ---: |"
+        );
+        for &sampler in &samplers {
+            for &spp in &spps {
+                if let Some((_, ratios)) = compared(sampler, spp) {
+                    let _ = writeln!(
+                        text,
+                        "| {sampler} | {spp} | {:.3} | {:.3} | {:.3} |",
+                        ratios.rmse, ratios.time, ratios.efficiency
+                    );
+                }
+            }
+        }
+        let verdicts: Vec<String> = spps
+            .iter()
+            .filter_map(|&spp| {
+                let mut ranked: Vec<(TracerSampler, Ratios)> = samplers
+                    .iter()
+                    .filter_map(|&s| Some((s, compared(s, spp)?.1)))
+                    .collect();
+                ranked.sort_by(|a, b| a.1.efficiency.total_cmp(&b.1.efficiency));
+                let &(best, ratios) = ranked.first()?;
+                let e = ratios.efficiency;
+                Some(if e < 1.0 {
+                    let runner_up = ranked.get(1).map_or(String::new(), |(s, r)| {
+                        format!(", ahead of `{s}` ({:.3})", r.efficiency)
+                    });
+                    format!(
+                        "at {spp} spp `{best}` wins, {e:.3} of pcg32's RMSE^2 x time \
+                         (pcg32 takes {:.2}x as long to the same error){runner_up}",
+                        1.0 / e
+                    )
+                } else {
+                    format!(
+                        "at {spp} spp pcg32 wins: the best of the others, `{best}`, \
+                         has {e:.3}x its RMSE^2 x time"
+                    )
+                })
+            })
+            .collect();
+        let _ = writeln!(
+            text,
+            "\nPer unit of time (RMSE^2 x time, lower is better) on {scene} {width}x{height}: {}.",
+            verdicts.join("; ")
+        );
+    }
+    (!text.is_empty()).then_some(text)
 }
 
 /// The run of several filters or modes: one table per scene and size,
@@ -477,13 +585,14 @@ fn light_tables(options: &Options, rows: &[Row]) -> String {
                 for &light in others {
                     match (find(first), find(light)) {
                         (Some(a), Some(b)) => {
+                            let ratios = Ratios::of(b, a);
                             let _ = write!(
                                 line,
                                 " {:.4} | {:.3} | {:.2} | {:.2} |",
-                                b.rmse / a.rmse,
+                                ratios.rmse,
                                 b.top_rmse / a.top_rmse,
-                                b.seconds / a.seconds,
-                                (b.rmse * b.rmse * b.seconds) / (a.rmse * a.rmse * a.seconds),
+                                ratios.time,
+                                ratios.efficiency,
                             );
                         }
                         _ => line.push_str(" - | - | - | - |"),
@@ -678,6 +787,87 @@ mod tests {
             table.contains("| 16 | 1 | 0.500 | 0.500 | 1.00 |"),
             "{table}"
         );
+    }
+
+    /// `row` with its time per frame.
+    fn timed(sampler: TracerSampler, spp: u32, rmse: f64, seconds: f64) -> Row {
+        Row {
+            seconds,
+            ..row(sampler, spp, rmse)
+        }
+    }
+
+    #[test]
+    fn the_pcg32_table_divides_by_pcg32_and_names_the_winner_per_count() {
+        let (pcg32, zsobol) = (
+            TracerSampler::Pcg32,
+            TracerSampler::Pixel(PixelSamplerKind::ZSobol),
+        );
+        // No pcg32, or pcg32 alone: no table.
+        assert_eq!(versus_pcg32(&[timed(SOBOL, 4, 0.1, 0.02)]), None);
+        assert_eq!(versus_pcg32(&[timed(pcg32, 4, 0.1, 0.02)]), None);
+        let rows = [
+            timed(pcg32, 4, 0.2, 0.01),
+            timed(SOBOL, 4, 0.1, 0.02),
+            timed(zsobol, 4, 0.1, 0.01),
+            timed(pcg32, 16, 0.1, 0.04),
+            timed(SOBOL, 16, 0.2, 0.02),
+            timed(zsobol, 16, 0.1, 0.06),
+            // No pcg32 row at 64 spp: no ratio there.
+            timed(SOBOL, 64, 0.05, 0.08),
+        ];
+        let table = versus_pcg32(&rows).unwrap();
+        for line in [
+            "| sobol | 4 | 0.500 | 2.000 | 0.500 |",
+            "| sobol | 16 | 2.000 | 0.500 | 2.000 |",
+            "| zsobol | 4 | 0.500 | 1.000 | 0.250 |",
+            "| zsobol | 16 | 1.000 | 1.500 | 1.500 |",
+        ] {
+            assert!(table.contains(&format!("\n{line}\n")), "{line}: {table}");
+        }
+        assert!(
+            !table.contains("| pcg32 |") && !table.contains("| 64 |"),
+            "{table}"
+        );
+        assert!(
+            table.contains(
+                "on moire 8x8: at 4 spp `zsobol` wins, 0.250 of pcg32's RMSE^2 x time \
+                 (pcg32 takes 4.00x as long to the same error), ahead of `sobol` (0.500); \
+                 at 16 spp pcg32 wins: the best of the others, `zsobol`, has 1.500x its \
+                 RMSE^2 x time.\n"
+            ),
+            "{table}"
+        );
+        assert_eq!(
+            Ratios::of(&rows[1], &rows[0]),
+            Ratios {
+                rmse: 0.5,
+                time: 2.0,
+                efficiency: 0.5
+            }
+        );
+    }
+
+    #[test]
+    fn the_default_tables_and_page_have_no_doubled_blank_lines() {
+        let options = crate::cli::tests::run_options(&["--scene", "moire", "--spp", "16"]);
+        let random = TracerSampler::Pixel(PixelSamplerKind::Padded(SamplerKind::Random));
+        let zsobol = TracerSampler::Pixel(PixelSamplerKind::ZSobol);
+        // Every section: the claim on random and the three ratio tables.
+        let rows = [
+            row(random, 16, 0.03),
+            row(SOBOL, 16, 0.01),
+            row(zsobol, 16, 0.02),
+            row(TracerSampler::SobolPairs, 16, 0.02),
+            row(TracerSampler::Pcg32, 16, 0.04),
+        ];
+        let tables = markdown_tables(&options, &rows);
+        for heading in ["#### zsobol / sobol", "#### Film and lens", "over pcg32"] {
+            assert!(tables.contains(heading), "{heading}: {tables}");
+        }
+        assert!(!tables.contains("\n\n\n"), "{tables}");
+        let page = docs_page_from("# Page\n\nprose\n", &tables, DOCS_BLOCK);
+        assert!(!page.contains("\n\n\n"), "{page}");
     }
 
     #[test]
