@@ -127,14 +127,14 @@ fn panels() -> Vec<Panel> {
             warp::uniform_cone(u, 0.5).truncate() / 0.87
         }),
         map("spherical_triangle (on z = 1)", &|u| {
-            on_plane(warp::spherical_triangle(u, tri[0], tri[1], tri[2], Vec3::ZERO).0)
+            on_plane(warp::spherical_triangle(u, tri[0], tri[1], tri[2], Vec3::ZERO).direction)
         }),
         map("uniform_triangle, same light", &|u| {
             let b = warp::uniform_triangle(u);
             (b.x * tri[0] + b.y * tri[1] + b.z * tri[2]).truncate()
         }),
         map("spherical_rectangle (on z = 1)", &|u| {
-            on_plane(warp::spherical_rectangle(u, corner, ex, ey, Vec3::ZERO).0)
+            on_plane(warp::spherical_rectangle(u, corner, ex, ey, Vec3::ZERO).direction)
         }),
         map("tent filter", &|u| filter(&tent, u)),
         map("gaussian filter 1.5, 0.5", &|u| filter(&gaussian, u)),

@@ -322,7 +322,8 @@ fn next_event(scene: &Scene, light: Light, u: Vec2, origin: Vec3, n: Vec3, rays:
         }
         Light::SolidAngle => {
             let (corner, ex, ey) = rect.edges();
-            let (wi, pdf, st) = warp::spherical_rectangle(u, corner, ex, ey, origin);
+            let sample = warp::spherical_rectangle(u, corner, ex, ey, origin);
+            let (wi, pdf, st) = (sample.direction, sample.pdf, sample.st);
             let cos_surface = n.dot(wi);
             if pdf <= 0.0 || cos_surface <= 0.0 {
                 return 0.0;
