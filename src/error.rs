@@ -233,6 +233,14 @@ pub enum Error {
         /// How many of the 48 digits they span.
         rank: u32,
     },
+    /// A name that is not a filter's
+    /// ([`FilterKind::from_str`](crate::filter::FilterKind)).
+    UnknownFilter {
+        /// The name given (its first [`InputText::CAPACITY`] bytes).
+        name: InputText,
+        /// Every filter's name, each once, as the message lists them.
+        names: &'static [&'static str],
+    },
     /// A pixel filter ([`filter`](crate::filter)) was given a parameter it
     /// cannot use.
     FilterParameter {
@@ -247,9 +255,10 @@ pub enum Error {
     },
 }
 
-/// A short copy of text a caller passed in (a sampler name), carried inside
-/// [`Error`] so that `Error` stays `Copy` and needs no allocator: the first
-/// [`CAPACITY`](Self::CAPACITY) bytes, cut at a character boundary.
+/// A short copy of text a caller passed in (a sampler or filter name),
+/// carried inside [`Error`] so that `Error` stays `Copy` and needs no
+/// allocator: the first [`CAPACITY`](Self::CAPACITY) bytes, cut at a
+/// character boundary.
 ///
 /// ```
 /// use wellspread::{Error, SamplerKind};
@@ -455,26 +464,20 @@ impl fmt::Display for Error {
                  got {max_frequency}"
             ),
             Error::UnknownSampler { name } => {
-                // Escaped, so that a newline in the name shows as `\n` and
-                // the message stays one line; a cut name ends in `...`.
-                write!(f, "unknown sampler \"{}", name.as_str().escape_debug())?;
-                if name.is_truncated() {
-                    f.write_str("...")?;
-                }
-                f.write_str("\"; ")?;
+                unknown(f, "sampler", name)?;
                 crate::samplers::write_expected_names(f, &[])
             }
             Error::UnknownPixelSampler { name, pixel_only } => {
-                write!(
-                    f,
-                    "unknown pixel sampler \"{}",
-                    name.as_str().escape_debug()
-                )?;
-                if name.is_truncated() {
-                    f.write_str("...")?;
-                }
-                f.write_str("\"; ")?;
+                unknown(f, "pixel sampler", name)?;
                 crate::samplers::write_expected_names(f, pixel_only)
+            }
+            Error::UnknownFilter { name, names } => {
+                unknown(f, "filter", name)?;
+                f.write_str("expected one of:")?;
+                for name in names {
+                    write!(f, " {name}")?;
+                }
+                f.write_str(" (any case, with or without - _ or spaces)")
             }
             Error::SamplesNotPowerOfTwo { samples_per_pixel } => {
                 let above = u64::from(samples_per_pixel).next_power_of_two();
@@ -562,6 +565,56 @@ impl fmt::Display for Error {
 }
 
 impl core::error::Error for Error {}
+
+/// `unknown {what} "{name}"; `, the start of the unknown-name messages:
+/// the name escaped, so that a newline in it shows as `\n` and the message
+/// stays one line, and a cut name ending in `...`.
+fn unknown(f: &mut fmt::Formatter<'_>, what: &str, name: InputText) -> fmt::Result {
+    write!(f, "unknown {what} \"{}", name.as_str().escape_debug())?;
+    if name.is_truncated() {
+        f.write_str("...")?;
+    }
+    f.write_str("\"; ")
+}
+
+/// `a` and `b` equal ignoring ASCII case and the separators `-`, `_`, ` `:
+/// the one rule for the names of sampler and filter kinds.
+pub(crate) fn same_name(a: &str, b: &str) -> bool {
+    fn key(s: &str) -> impl Iterator<Item = u8> + '_ {
+        s.bytes()
+            .filter(|c| !matches!(c, b'-' | b'_' | b' '))
+            .map(|c| c.to_ascii_lowercase())
+    }
+    key(a).eq(key(b))
+}
+
+/// Deserializes a kind named by a string (`SamplerKind`, `FilterKind`;
+/// feature `serde`) through its `FromStr`, so that a settings file gets the
+/// same error as a command line; `expecting` is what serde says it wanted
+/// when given no string.
+#[cfg(feature = "serde")]
+pub(crate) fn deserialize_name<'de, D, T>(
+    deserializer: D,
+    expecting: &'static str,
+) -> Result<T, D::Error>
+where
+    D: serde::Deserializer<'de>,
+    T: core::str::FromStr<Err = Error>,
+{
+    struct Name<T>(&'static str, core::marker::PhantomData<T>);
+    impl<T: core::str::FromStr<Err = Error>> serde::de::Visitor<'_> for Name<T> {
+        type Value = T;
+
+        fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+            f.write_str(self.0)
+        }
+
+        fn visit_str<E: serde::de::Error>(self, name: &str) -> Result<T, E> {
+            name.parse().map_err(E::custom)
+        }
+    }
+    deserializer.deserialize_str(Name(expecting, core::marker::PhantomData))
+}
 
 /// The message of [`Error::TooManySamples`] and [`Error::TooManyNdSamples`].
 fn too_many(

@@ -8,8 +8,7 @@ use glam::{Vec2, Vec3, Vec4};
 
 use super::{BlueNoise, Draw, Padded, PaddedNd, PixelSampler, Root, ZSobol};
 use crate::error::Error;
-use crate::error::InputText;
-use crate::samplers::same_name;
+use crate::error::{InputText, same_name};
 use crate::samplers::{AnySampler, LatinHypercube, OrthogonalArray, SamplerKind, SamplerVisitor};
 use crate::traits::DomainSampler;
 

@@ -11,7 +11,7 @@ use super::{
     BlueMultiJittered, CorrelatedMultiJittered, Halton, Hammersley, Jittered, MultiJittered,
     NRooks, Pmj02, Random, Regular, Sobol,
 };
-use crate::error::Error;
+use crate::error::{Error, same_name};
 use crate::traits::Sampler2D;
 use crate::traits::{DomainSampler, Sequence2D};
 
@@ -279,17 +279,6 @@ pub(crate) const ALIASES: &[(&str, SamplerKind)] = &[
     ("white", SamplerKind::Random),
 ];
 
-/// `a` and `b` equal ignoring ASCII case and the separators `-`, `_`, ` `:
-/// the one rule for sampler names.
-pub(crate) fn same_name(a: &str, b: &str) -> bool {
-    fn key(s: &str) -> impl Iterator<Item = u8> + '_ {
-        s.bytes()
-            .filter(|c| !matches!(c, b'-' | b'_' | b' '))
-            .map(|c| c.to_ascii_lowercase())
-    }
-    key(a).eq(key(b))
-}
-
 /// Writes the valid names for an error message: every kind's name, then
 /// `extra` (the pixel samplers' own), then the aliases.
 pub(crate) fn write_expected_names(f: &mut fmt::Formatter<'_>, extra: &[&str]) -> fmt::Result {
@@ -340,9 +329,7 @@ impl FromStr for SamplerKind {
 /// same error as [`FromStr`].
 #[cfg(feature = "serde")]
 mod serde_impls {
-    use core::fmt;
-
-    use serde::de::{self, Deserialize, Deserializer, Visitor};
+    use serde::de::{Deserialize, Deserializer};
     use serde::ser::{Serialize, Serializer};
 
     use super::SamplerKind;
@@ -355,19 +342,10 @@ mod serde_impls {
 
     impl<'de> Deserialize<'de> for SamplerKind {
         fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-            struct Name;
-            impl Visitor<'_> for Name {
-                type Value = SamplerKind;
-
-                fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                    f.write_str("a sampler name such as \"sobol\" or \"n-rooks\"")
-                }
-
-                fn visit_str<E: de::Error>(self, name: &str) -> Result<SamplerKind, E> {
-                    name.parse().map_err(E::custom)
-                }
-            }
-            deserializer.deserialize_str(Name)
+            crate::error::deserialize_name(
+                deserializer,
+                "a sampler name such as \"sobol\" or \"n-rooks\"",
+            )
         }
     }
 }

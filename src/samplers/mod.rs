@@ -18,8 +18,8 @@ pub use grid::{
     BlueMultiJittered, CorrelatedMultiJittered, Jittered, MultiJittered, NRooks, Regular,
 };
 pub use hammersley::Hammersley;
+pub(crate) use kind::write_expected_names;
 pub use kind::{AnySampler, SamplerKind, SamplerVisitor};
-pub(crate) use kind::{same_name, write_expected_names};
 pub use nd::{LatinHypercube, OrthogonalArray, OrthogonalArrayOffset};
 pub use random::Random;
 pub use sequence::{Halton, Pmj02, Sobol, Sobol4D};

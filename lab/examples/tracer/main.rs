@@ -50,6 +50,7 @@ use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
 use indicatif::{ProgressBar, ProgressStyle};
+use wellspread::filter::FilterKind;
 
 use crate::analysis::{blurred_rmse, error_spectrum};
 use crate::cli::Options;
@@ -58,7 +59,7 @@ use crate::output::{
     Crop, Picture, Series, Tile, contact_sheet, spectrum_svg, stack_rows, trade_plot_svg,
     viewing_zoom,
 };
-use crate::render::{FILM_DIMENSION, Filter, FilterMode, Image, TracerSampler, render};
+use crate::render::{FILM_DIMENSION, FilterMode, Image, TracerSampler, render};
 use crate::report::{
     Row, docs_block_name, docs_page_from, json_report, low_frequency_power, markdown_tables,
 };
@@ -189,7 +190,7 @@ struct SceneRun {
     kind: SceneKind,
     width: u32,
     height: u32,
-    filter: Filter,
+    filter: FilterKind,
     mode: FilterMode,
     rows: Vec<Row>,
     reference: Image,
@@ -208,7 +209,7 @@ fn run_scene(
     kind: SceneKind,
     width: u32,
     height: u32,
-    (filter, mode, lights): (Filter, FilterMode, &[Light]),
+    (filter, mode, lights): (FilterKind, FilterMode, &[Light]),
 ) -> Result<Vec<SceneRun>, Failure> {
     let jobs = lights
         .iter()
@@ -351,7 +352,7 @@ struct SceneJob<'a> {
     kind: SceneKind,
     width: u32,
     height: u32,
-    filter: Filter,
+    filter: FilterKind,
     mode: FilterMode,
     /// How the path-traced scene samples its light (unused by the others).
     light: Light,
@@ -385,7 +386,7 @@ impl<'a> SceneJob<'a> {
         kind: SceneKind,
         width: u32,
         height: u32,
-        (filter, mode, light): (Filter, FilterMode, Light),
+        (filter, mode, light): (FilterKind, FilterMode, Light),
     ) -> Result<Self, Failure> {
         let mut label = match mode {
             FilterMode::Weighted => format!("{kind}-{width}x{height}-{filter}"),
