@@ -77,8 +77,8 @@ const NAMES: &[&str] = &[
 ];
 
 impl FilterKind {
-    /// All kinds, from the narrowest default support to the widest
-    /// lobes: the order of [`name`](Self::name)'s list in error messages.
+    /// All kinds, in the order tools list them: the exactly sampled
+    /// filters, then the tabulated ones.
     pub const ALL: &'static [FilterKind] = &[
         FilterKind::Box,
         FilterKind::Tent,
