@@ -222,6 +222,9 @@ pub enum Error {
         /// How many of the 48 digits they span.
         rank: u32,
     },
+    /// A name that is not a filter's
+    /// ([`FilterKind::from_str`](crate::filter::FilterKind)).
+    UnknownFilter(UnknownName),
     /// A pixel filter ([`filter`](crate::filter)) was given a parameter it
     /// cannot use.
     FilterParameter {
@@ -236,8 +239,8 @@ pub enum Error {
     },
 }
 
-/// A short copy of text a caller passed in (a sampler name), so that
-/// [`Error`] stays `Copy` and needs no allocator: the first
+/// A short copy of text a caller passed in (a sampler or filter name),
+/// so that [`Error`] stays `Copy` and needs no allocator: the first
 /// [`CAPACITY`](Self::CAPACITY) bytes, cut at a character boundary.
 #[derive(Clone, Copy, PartialEq, Eq, Hash)]
 pub(crate) struct InputText {
@@ -304,7 +307,7 @@ impl fmt::Display for InputText {
 }
 
 /// A name a parser did not know ([`Error::UnknownSampler`],
-/// [`Error::UnknownPixelSampler`]): the text given and the names that
+/// [`Error::UnknownPixelSampler`], [`Error::UnknownFilter`]): the text given and the names that
 /// parser accepts, which the message lists, each once.
 ///
 /// ```
@@ -510,6 +513,7 @@ impl fmt::Display for Error {
             ),
             Error::UnknownSampler(unknown) => write!(f, "unknown sampler {unknown}"),
             Error::UnknownPixelSampler(unknown) => write!(f, "unknown pixel sampler {unknown}"),
+            Error::UnknownFilter(unknown) => write!(f, "unknown filter {unknown}"),
             Error::SamplesNotPowerOfTwo { samples_per_pixel } => {
                 let above = u64::from(samples_per_pixel).next_power_of_two();
                 write!(
@@ -596,6 +600,45 @@ impl fmt::Display for Error {
 }
 
 impl core::error::Error for Error {}
+
+/// `a` and `b` equal ignoring ASCII case and the separators `-`, `_`, ` `:
+/// the one rule for the names of sampler and filter kinds.
+pub(crate) fn same_name(a: &str, b: &str) -> bool {
+    fn key(s: &str) -> impl Iterator<Item = u8> + '_ {
+        s.bytes()
+            .filter(|c| !matches!(c, b'-' | b'_' | b' '))
+            .map(|c| c.to_ascii_lowercase())
+    }
+    key(a).eq(key(b))
+}
+
+/// Deserializes a kind named by a string (`SamplerKind`, `FilterKind`;
+/// feature `serde`) through its `FromStr`, so that a settings file gets the
+/// same error as a command line; `expecting` is what serde says it wanted
+/// when given no string.
+#[cfg(feature = "serde")]
+pub(crate) fn deserialize_name<'de, D, T>(
+    deserializer: D,
+    expecting: &'static str,
+) -> Result<T, D::Error>
+where
+    D: serde::Deserializer<'de>,
+    T: core::str::FromStr<Err = Error>,
+{
+    struct Name<T>(&'static str, core::marker::PhantomData<T>);
+    impl<T: core::str::FromStr<Err = Error>> serde::de::Visitor<'_> for Name<T> {
+        type Value = T;
+
+        fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+            f.write_str(self.0)
+        }
+
+        fn visit_str<E: serde::de::Error>(self, name: &str) -> Result<T, E> {
+            name.parse().map_err(E::custom)
+        }
+    }
+    deserializer.deserialize_str(Name(expecting, core::marker::PhantomData))
+}
 
 /// The message of [`Error::TooManySamples`] and [`Error::TooManyNdSamples`].
 fn too_many(

@@ -7,8 +7,8 @@ use core::str::FromStr;
 use glam::{Vec2, Vec3, Vec4};
 
 use super::{BlueNoise, Draw, Padded, PaddedNd, PixelSampler, PixelSamplerHooks, Root, ZSobol};
-use crate::error::{Error, UnknownName};
-use crate::samplers::{ALIAS_NAMES as SAMPLER_ALIAS_NAMES, same_name};
+use crate::error::{Error, UnknownName, same_name};
+use crate::samplers::ALIAS_NAMES as SAMPLER_ALIAS_NAMES;
 use crate::samplers::{AnySampler, LatinHypercube, OrthogonalArray, SamplerKind, SamplerVisitor};
 use crate::traits::DomainSampler;
 

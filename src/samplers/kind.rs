@@ -11,7 +11,7 @@ use super::{
     BlueMultiJittered, CorrelatedMultiJittered, Halton, Hammersley, Jittered, MultiJittered,
     NRooks, Pmj02, Random, Regular, Sobol,
 };
-use crate::error::{Error, UnknownName};
+use crate::error::{Error, UnknownName, same_name};
 use crate::traits::Sampler2D;
 use crate::traits::{DomainSampler, Sequence2D};
 
@@ -301,17 +301,6 @@ pub(crate) const ALIAS_NAMES: [&str; ALIASES.len()] = {
     names
 };
 
-/// `a` and `b` equal ignoring ASCII case and the separators `-`, `_`, ` `:
-/// the one rule for sampler names.
-pub(crate) fn same_name(a: &str, b: &str) -> bool {
-    fn key(s: &str) -> impl Iterator<Item = u8> + '_ {
-        s.bytes()
-            .filter(|c| !matches!(c, b'-' | b'_' | b' '))
-            .map(|c| c.to_ascii_lowercase())
-    }
-    key(a).eq(key(b))
-}
-
 impl FromStr for SamplerKind {
     type Err = Error;
 
@@ -347,9 +336,7 @@ impl FromStr for SamplerKind {
 /// same error as [`FromStr`].
 #[cfg(feature = "serde")]
 mod serde_impls {
-    use core::fmt;
-
-    use serde::de::{self, Deserialize, Deserializer, Visitor};
+    use serde::de::{Deserialize, Deserializer};
     use serde::ser::{Serialize, Serializer};
 
     use super::SamplerKind;
@@ -362,19 +349,10 @@ mod serde_impls {
 
     impl<'de> Deserialize<'de> for SamplerKind {
         fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-            struct Name;
-            impl Visitor<'_> for Name {
-                type Value = SamplerKind;
-
-                fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                    f.write_str("a sampler name such as \"sobol\" or \"n-rooks\"")
-                }
-
-                fn visit_str<E: de::Error>(self, name: &str) -> Result<SamplerKind, E> {
-                    name.parse().map_err(E::custom)
-                }
-            }
-            deserializer.deserialize_str(Name)
+            crate::error::deserialize_name(
+                deserializer,
+                "a sampler name such as \"sobol\" or \"n-rooks\"",
+            )
         }
     }
 }

@@ -18,7 +18,7 @@ pub use grid::{
     BlueMultiJittered, CorrelatedMultiJittered, Jittered, MultiJittered, NRooks, Regular,
 };
 pub use hammersley::Hammersley;
-pub(crate) use kind::{ALIAS_NAMES, same_name};
+pub(crate) use kind::ALIAS_NAMES;
 pub use kind::{AnySampler, SamplerKind, SamplerVisitor};
 pub use nd::{LatinHypercube, OrthogonalArray, OrthogonalArrayOffset};
 pub use random::Random;

@@ -200,20 +200,40 @@ fn any_sampler_is_eq_and_hash() {
     assert_eq!(set.len(), 2 * SamplerKind::ALL.len());
 }
 
+/// Every kind of `all` serializes as its name and back; `unknown` fails
+/// with `message`, and a number is refused.
+#[cfg(feature = "serde")]
+fn serialize_as_names<T>(all: &[T], unknown: &str, message: &str)
+where
+    T: serde::Serialize + serde::de::DeserializeOwned + PartialEq + std::fmt::Debug + ToString,
+{
+    for kind in all {
+        let json = serde_json::to_string(kind).unwrap();
+        assert_eq!(json, format!("\"{}\"", kind.to_string()));
+        assert_eq!(&serde_json::from_str::<T>(&json).unwrap(), kind);
+    }
+    let error = serde_json::from_str::<T>(unknown).unwrap_err();
+    assert!(error.to_string().contains(message), "{error}");
+    assert!(serde_json::from_str::<T>("3").is_err());
+}
+
 #[cfg(feature = "serde")]
 #[test]
 fn kinds_serialize_as_their_names() {
-    for &kind in SamplerKind::ALL {
-        let json = serde_json::to_string(&kind).unwrap();
-        assert_eq!(json, format!("\"{}\"", kind.name()));
-        assert_eq!(serde_json::from_str::<SamplerKind>(&json).unwrap(), kind);
-    }
-    let error = serde_json::from_str::<SamplerKind>("\"sobel\"").unwrap_err();
-    assert!(
-        error.to_string().contains("unknown sampler \"sobel\""),
-        "{error}"
+    serialize_as_names(SamplerKind::ALL, "\"sobel\"", "unknown sampler \"sobel\"");
+}
+
+/// Here rather than in `tests/filter_kind.rs` so that the CI's serde step
+/// (`--test samplers -- kinds_serialize`) runs it.
+#[cfg(feature = "serde")]
+#[test]
+fn filter_kinds_serialize_as_their_names() {
+    use wellspread::filter::FilterKind;
+    serialize_as_names(FilterKind::ALL, "\"sinc\"", "unknown filter \"sinc\"");
+    assert_eq!(
+        serde_json::from_str::<FilterKind>("\"Blackman-Harris\"").unwrap(),
+        FilterKind::BlackmanHarris
     );
-    assert!(serde_json::from_str::<SamplerKind>("3").is_err());
 }
 
 // ---- Constructors and errors ----

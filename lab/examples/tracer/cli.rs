@@ -7,9 +7,10 @@ use std::io::Write;
 use std::path::PathBuf;
 
 use clap::Parser;
+use wellspread::filter::FilterKind;
 
 use crate::cornell::Light;
-use crate::render::{Filter, FilterMode, TracerSampler};
+use crate::render::{FilterMode, TracerSampler};
 use crate::scenes::{Built, SceneKind};
 use crate::shared::{self, Failure};
 
@@ -84,7 +85,7 @@ pub struct Cli {
     /// Comma-separated reconstruction filters: box, tent, gaussian,
     /// mitchell, lanczos, blackman-harris [default: box]
     #[arg(long = "filter", value_name = "LIST", value_delimiter = ',', value_parser = parse_filter)]
-    filters: Vec<Filter>,
+    filters: Vec<FilterKind>,
     /// Comma-separated filter modes: weighted (box samples splatted with
     /// the filter's weight), importance (samples drawn from the filter,
     /// pbrt-v4's sum(w L) / sum(w)), importance-mean (the same samples,
@@ -132,7 +133,7 @@ pub struct Options {
     pub spps: Option<Vec<u32>>,
     pub size: Option<(u32, u32)>,
     /// The filters, in the order given.
-    pub filters: Vec<Filter>,
+    pub filters: Vec<FilterKind>,
     /// The filter modes, in the order given.
     pub modes: Vec<FilterMode>,
     /// How cornell samples its light, in the order given.
@@ -174,7 +175,7 @@ impl Options {
         // it out, and asking for it is an error.
         let path_traced = |scene: &SceneKind| matches!(scene.build(1, 1), Built::PathTraced);
         let filters = if cli.filters.is_empty() {
-            vec![Filter::Box]
+            vec![FilterKind::Box]
         } else {
             dedup(cli.filters)
         };
@@ -183,7 +184,7 @@ impl Options {
         } else {
             dedup(cli.modes)
         };
-        let box_only = filters == [Filter::Box] && modes == [FilterMode::Weighted];
+        let box_only = filters == [FilterKind::Box] && modes == [FilterMode::Weighted];
         if !box_only && let Some(scene) = cli.scenes.iter().find(|s| path_traced(s)) {
             let names: Vec<&str> = filters.iter().map(|f| f.name()).collect();
             let mode_names: Vec<&str> = modes.iter().map(|m| m.name()).collect();
@@ -377,8 +378,9 @@ fn parse_sampler(text: &str) -> Result<TracerSampler, String> {
     text.parse()
 }
 
-fn parse_filter(text: &str) -> Result<Filter, String> {
+fn parse_filter(text: &str) -> Result<FilterKind, String> {
     text.parse()
+        .map_err(|error: wellspread::Error| error.to_string())
 }
 
 fn parse_filter_mode(text: &str) -> Result<FilterMode, String> {
@@ -474,7 +476,7 @@ pub(crate) mod tests {
             assert_eq!(options.spps_for(scene), scene.default_spps());
             assert_eq!(options.sizes_for(scene), scene.default_sizes());
         }
-        assert_eq!(options.filters, [Filter::Box]);
+        assert_eq!(options.filters, [FilterKind::Box]);
         assert_eq!(options.modes, [FilterMode::Weighted]);
         assert_eq!((options.frame, options.frames), (0, None));
         assert_eq!(options.frame_range(SceneKind::Moire), 0..=0);
@@ -513,7 +515,7 @@ pub(crate) mod tests {
         );
         assert_eq!(options.spps_for(SceneKind::Moire), [4, 16]);
         assert_eq!(options.size, Some((32, 8)));
-        assert_eq!(options.filters, [Filter::Mitchell]);
+        assert_eq!(options.filters, [FilterKind::Mitchell]);
         assert_eq!((options.frame, options.frames), (9, Some(4)));
         assert_eq!(options.frame_range(SceneKind::Moire), 9..=12);
         assert_eq!(options.report, Some(PathBuf::from("r.json")));
@@ -684,7 +686,7 @@ pub(crate) mod tests {
             "--filter-mode",
             "importance,weighted,importance-mean",
         ]);
-        assert_eq!(options.filters, Filter::ALL);
+        assert_eq!(options.filters, FilterKind::ALL);
         assert_eq!(
             options.modes,
             [
@@ -693,11 +695,11 @@ pub(crate) mod tests {
                 FilterMode::ImportanceMean
             ]
         );
-        for filter in Filter::ALL {
+        for &filter in FilterKind::ALL {
             assert_eq!(filter.name().parse(), Ok(filter));
         }
         let message = usage_error(&["--filter", "box,sinc"]);
-        for filter in Filter::ALL {
+        for filter in FilterKind::ALL {
             assert!(message.contains(filter.name()), "{filter}: {message}");
         }
         // Importance-sampled box is not the path tracer's mode either.

@@ -52,6 +52,7 @@ use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
 use indicatif::{ProgressBar, ProgressStyle};
+use wellspread::filter::FilterKind;
 
 use crate::analysis::{blurred_rmse, error_spectrum};
 use crate::cli::Options;
@@ -61,7 +62,7 @@ use crate::output::{
     viewing_zoom,
 };
 use crate::path::FrameSampler;
-use crate::render::{FILM_DIMENSION, Filter, FilterMode, Image, TracerSampler, render};
+use crate::render::{FILM_DIMENSION, FilterMode, Image, TracerSampler, render};
 use crate::report::{
     Row, docs_block_name, docs_page_from, json_report, low_frequency_power, markdown_tables,
 };
@@ -192,7 +193,7 @@ struct SceneRun {
     kind: SceneKind,
     width: u32,
     height: u32,
-    filter: Filter,
+    filter: FilterKind,
     mode: FilterMode,
     rows: Vec<Row>,
     reference: Image,
@@ -211,7 +212,7 @@ fn run_scene(
     kind: SceneKind,
     width: u32,
     height: u32,
-    (filter, mode, lights): (Filter, FilterMode, &[Light]),
+    (filter, mode, lights): (FilterKind, FilterMode, &[Light]),
 ) -> Result<Vec<SceneRun>, Failure> {
     let jobs = lights
         .iter()
@@ -354,7 +355,7 @@ struct SceneJob<'a> {
     kind: SceneKind,
     width: u32,
     height: u32,
-    filter: Filter,
+    filter: FilterKind,
     mode: FilterMode,
     /// How the path-traced scene samples its light (unused by the others).
     light: Light,
@@ -388,7 +389,7 @@ impl<'a> SceneJob<'a> {
         kind: SceneKind,
         width: u32,
         height: u32,
-        (filter, mode, light): (Filter, FilterMode, Light),
+        (filter, mode, light): (FilterKind, FilterMode, Light),
     ) -> Result<Self, Failure> {
         let mut label = match mode {
             FilterMode::Weighted => format!("{kind}-{width}x{height}-{filter}"),

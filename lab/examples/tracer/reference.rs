@@ -28,11 +28,13 @@ use std::io;
 use std::path::{Path, PathBuf};
 
 use rayon::prelude::*;
+use wellspread::filter::{AnyFilter, Filter, FilterKind};
 use wellspread::{AnySampler, Padded, SamplerKind};
 
 use crate::path;
 use crate::render::{
-    Filter, FilterMode, Image, REFERENCE_DIMENSION, box_pixel, gauss_legendre, render,
+    FilterMode, Image, REFERENCE_DIMENSION, box_pixel, breaks, gauss_legendre, render,
+    tracer_filter,
 };
 use crate::scenes::{Built, Checker, Moire, Polygon, Scene, SceneKind};
 
@@ -51,7 +53,7 @@ pub fn cache_path(
     scene: SceneKind,
     width: u32,
     height: u32,
-    filter: Filter,
+    filter: FilterKind,
 ) -> PathBuf {
     out.join(format!("reference-{scene}-{width}x{height}-{filter}.bin"))
 }
@@ -64,7 +66,7 @@ pub fn load_or_compute(
     scene: &Built,
     width: u32,
     height: u32,
-    filter: Filter,
+    filter: FilterKind,
 ) -> io::Result<(Image, bool)> {
     let path = match scene {
         Built::Film(_) => cache_path(out, kind, width, height, filter),
@@ -84,11 +86,11 @@ pub fn load_or_compute(
     Ok((image, true))
 }
 
-fn compute(scene: &Scene, width: u32, height: u32, filter: Filter) -> Image {
+fn compute(scene: &Scene, width: u32, height: u32, filter: FilterKind) -> Image {
     match (scene, filter) {
-        (Scene::Polygon(polygon), Filter::Box) => polygon_exact(polygon, width, height),
+        (Scene::Polygon(polygon), FilterKind::Box) => polygon_exact(polygon, width, height),
         (Scene::Moire(moire), _) => moire_quadrature(moire, width, height, filter),
-        (Scene::Checker(checker), Filter::Box) => checker_box(checker, scene, width, height),
+        (Scene::Checker(checker), FilterKind::Box) => checker_box(checker, scene, width, height),
         _ => render(
             scene,
             width,
@@ -160,8 +162,9 @@ fn polygon_exact(polygon: &Polygon, width: u32, height: u32) -> Image {
 /// `sum(w f) / sum(w)` for each pixel, by quadrature over the filter's
 /// support clipped to the film (samples never fall outside it, so the
 /// rendered images normalise over the same region).
-fn moire_quadrature(moire: &Moire, width: u32, height: u32, filter: Filter) -> Image {
+fn moire_quadrature(moire: &Moire, width: u32, height: u32, filter: FilterKind) -> Image {
     let rule = gauss_legendre::<8>();
+    let filter = &tracer_filter(filter);
     let pixels = (0..width * height)
         .into_par_iter()
         .map(|i| {
@@ -182,7 +185,7 @@ fn moire_pixel(
     moire: &Moire,
     width: u32,
     height: u32,
-    filter: Filter,
+    filter: &AnyFilter,
     (nodes, weights): &([f64; 8], [f64; 8]),
     px: u32,
     py: u32,
@@ -190,8 +193,7 @@ fn moire_pixel(
     // Split an interval at the filter's kinks around `centre`, clipped to
     // [0, limit]: the filter is smooth on each piece.
     let pieces = |centre: f64, limit: f64| -> Vec<(f64, f64)> {
-        filter
-            .breaks()
+        breaks(filter.kind())
             .windows(2)
             .map(|pair| ((centre + pair[0]).max(0.0), (centre + pair[1]).min(limit)))
             .filter(|(a, b)| b > a)
@@ -212,12 +214,12 @@ fn moire_pixel(
                 let ya = y0 + f64::from(cell_y) * hy;
                 for (ny, gauss_y) in nodes.iter().zip(weights) {
                     let y = ya + (ny + 1.0) * 0.5 * hy;
-                    let wy = gauss_y * 0.5 * hy * filter.weight_1d(y - cy);
+                    let wy = gauss_y * 0.5 * hy * filter.evaluate_1d(y - cy);
                     for cell_x in 0..mx {
                         let xa = x0 + f64::from(cell_x) * hx;
                         for (nx, gauss_x) in nodes.iter().zip(weights) {
                             let x = xa + (nx + 1.0) * 0.5 * hx;
-                            let w = wy * gauss_x * 0.5 * hx * filter.weight_1d(x - cx);
+                            let w = wy * gauss_x * 0.5 * hx * filter.evaluate_1d(x - cx);
                             weighted += w * moire.value(x, y);
                             total += w;
                         }
@@ -282,11 +284,12 @@ mod tests {
         let Some(Scene::Moire(moire)) = &scene else {
             unreachable!()
         };
-        for filter in Filter::ALL {
+        for &kind in FilterKind::ALL {
+            let filter = &tracer_filter(kind);
             let (px, py) = (3u32, 28u32);
             let rule = gauss_legendre::<8>();
             let quadrature = moire_pixel(moire, width, height, filter, &rule, px, py);
-            let r = filter.radius();
+            let r = f64::from(filter.radius());
             let n = 256;
             let (mut weighted, mut total) = (0.0, 0.0);
             for j in 0..n {
@@ -297,7 +300,7 @@ mod tests {
                     if x < 0.0 || y < 0.0 || x >= 32.0 || y >= 32.0 {
                         continue;
                     }
-                    let w = filter.weight_1d(dx) * filter.weight_1d(dy);
+                    let w = filter.evaluate_1d(dx) * filter.evaluate_1d(dy);
                     weighted += w * moire.value(x, y);
                     total += w;
                 }
@@ -305,7 +308,7 @@ mod tests {
             let dense = weighted / total;
             assert!(
                 (dense - quadrature).abs() < 3e-4,
-                "{filter}: {dense} vs {quadrature}"
+                "{kind}: {dense} vs {quadrature}"
             );
         }
     }

@@ -10,6 +10,7 @@ use std::fmt;
 use std::str::FromStr;
 
 use rayon::prelude::*;
+use wellspread::filter::{AnyFilter, Filter, FilterKind, LanczosFilter, TentFilter};
 use wellspread::{PixelSampler, PixelSamplerKind, SamplerKind};
 
 use crate::path::{FrameSampler, Pcg32Source};
@@ -46,117 +47,44 @@ impl Image {
     }
 }
 
-/// The reconstruction filter: how samples are weighted into pixels
-/// (Smith 1995, "A Pixel Is Not A Little Square"). Every filter is one of
-/// the library's ([`wellspread::filter`]), separable, `w(dx, dy) = f(dx)
-/// f(dy)`, with `d` measured in pixels from the pixel centre; its values
-/// and its samples both come from the library.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Filter {
-    /// Each pixel averages its own samples: radius 1/2, the little square.
-    Box,
-    /// The tent (triangle), radius 1: linear interpolation's filter.
-    Tent,
-    /// Gaussian with sigma 1/2 pixel, truncated at radius 3 sigma = 1.5
-    /// (pbrt's defaults; truncated, not shifted down to zero).
-    Gaussian,
-    /// Mitchell & Netravali 1988 with B = C = 1/3, radius 2: their
-    /// recommended trade between blur and ringing.
-    Mitchell,
-    /// Lanczos: `sinc(x) sinc(x / 3)`, radius 3 (Lanczos-3).
-    Lanczos,
-    /// The 4-term Blackman-Harris window over radius 2.
-    BlackmanHarris,
-}
-
-/// The library's filters with the parameters [`Filter`] documents, built
-/// once (the tabulated ones build a table of 241 nodes).
-struct LibraryFilters {
-    r#box: wellspread::filter::BoxFilter,
-    tent: wellspread::filter::TentFilter,
-    gaussian: wellspread::filter::GaussianFilter,
-    mitchell: wellspread::filter::MitchellFilter,
-    lanczos: wellspread::filter::LanczosFilter,
-    blackman_harris: wellspread::filter::BlackmanHarrisFilter,
-}
-
-static LIBRARY_FILTERS: std::sync::LazyLock<LibraryFilters> = std::sync::LazyLock::new(|| {
-    use wellspread::filter::*;
+/// The reconstruction filter the tracer renders with under `kind`: how
+/// samples are weighted into pixels (Smith 1995, "A Pixel Is Not A Little
+/// Square"). Every filter is the library's ([`wellspread::filter`]),
+/// separable, `w(dx, dy) = f(dx) f(dy)`, with `d` measured in pixels from
+/// the pixel centre; its values and its samples both come from the
+/// library. The parameters are the library's defaults
+/// ([`FilterKind::build`]: pbrt-v4's; box radius 1/2, the little square;
+/// Gaussian sigma 1/2 truncated at 1.5; Mitchell & Netravali's B = C = 1/3
+/// at radius 2; Blackman-Harris radius 2) but for two narrower ones: the
+/// tent of radius 1, linear interpolation's filter, and Lanczos-3,
+/// `sinc(x) sinc(x / 3)` at radius 3.
+pub fn tracer_filter(kind: FilterKind) -> AnyFilter {
     let valid = "the tracer's filter parameters are valid";
-    LibraryFilters {
-        r#box: BoxFilter::new(0.5).expect(valid),
-        tent: TentFilter::new(1.0).expect(valid),
-        gaussian: GaussianFilter::new(1.5, 0.5).expect(valid),
-        mitchell: MitchellFilter::new(2.0, 1.0 / 3.0, 1.0 / 3.0).expect(valid),
-        lanczos: LanczosFilter::new(3.0, 3.0).expect(valid),
-        blackman_harris: BlackmanHarrisFilter::new(2.0).expect(valid),
+    match kind {
+        FilterKind::Tent => TentFilter::new(1.0).expect(valid).into(),
+        FilterKind::Lanczos => LanczosFilter::new(3.0, 3.0).expect(valid).into(),
+        _ => kind.build(),
     }
-});
+}
 
-impl Filter {
-    pub const ALL: [Filter; 6] = [
-        Filter::Box,
-        Filter::Tent,
-        Filter::Gaussian,
-        Filter::Mitchell,
-        Filter::Lanczos,
-        Filter::BlackmanHarris,
-    ];
-
-    pub fn name(self) -> &'static str {
-        match self {
-            Filter::Box => "box",
-            Filter::Tent => "tent",
-            Filter::Gaussian => "gaussian",
-            Filter::Mitchell => "mitchell",
-            Filter::Lanczos => "lanczos",
-            Filter::BlackmanHarris => "blackman-harris",
-        }
+/// Offsets from the pixel centre where [`tracer_filter`]'s 1D profile is
+/// not smooth (its ends, the tent's peak, the joins of Mitchell's cubic
+/// pieces) or, for the smooth windows, where its lobes meet, in
+/// increasing order: the quadrature reference integrates piece by piece.
+pub fn breaks(kind: FilterKind) -> &'static [f64] {
+    match kind {
+        FilterKind::Box => &[-0.5, 0.5],
+        FilterKind::Tent => &[-1.0, 0.0, 1.0],
+        FilterKind::Gaussian => &[-1.5, 1.5],
+        FilterKind::Mitchell | FilterKind::BlackmanHarris => &[-2.0, -1.0, 0.0, 1.0, 2.0],
+        FilterKind::Lanczos => &[-3.0, -2.0, -1.0, 0.0, 1.0, 2.0, 3.0],
     }
+}
 
-    /// The library filter this one is.
-    pub fn library(self) -> &'static dyn wellspread::filter::Filter {
-        let filters = &*LIBRARY_FILTERS;
-        match self {
-            Filter::Box => &filters.r#box,
-            Filter::Tent => &filters.tent,
-            Filter::Gaussian => &filters.gaussian,
-            Filter::Mitchell => &filters.mitchell,
-            Filter::Lanczos => &filters.lanczos,
-            Filter::BlackmanHarris => &filters.blackman_harris,
-        }
-    }
-
-    /// Half-width of the support, in pixels.
-    pub fn radius(self) -> f64 {
-        f64::from(self.library().radius())
-    }
-
-    /// Offsets from the pixel centre where the 1D profile is not smooth
-    /// (its ends, the tent's peak, the joins of Mitchell's cubic pieces)
-    /// or, for the smooth windows, where its lobes meet, in increasing
-    /// order: the quadrature reference integrates piece by piece.
-    pub fn breaks(self) -> &'static [f64] {
-        match self {
-            Filter::Box => &[-0.5, 0.5],
-            Filter::Tent => &[-1.0, 0.0, 1.0],
-            Filter::Gaussian => &[-1.5, 1.5],
-            Filter::Mitchell | Filter::BlackmanHarris => &[-2.0, -1.0, 0.0, 1.0, 2.0],
-            Filter::Lanczos => &[-3.0, -2.0, -1.0, 0.0, 1.0, 2.0, 3.0],
-        }
-    }
-
-    /// The 1D profile at offset `d` pixels (the library's, normalised to
-    /// integrate to 1); zero outside the radius.
-    #[inline]
-    pub fn weight_1d(self, d: f64) -> f64 {
-        self.library().evaluate_1d(d)
-    }
-
-    /// Whether the profile goes negative somewhere (ringing at edges).
-    pub fn has_negative_lobes(self) -> bool {
-        self.library().weight_magnitude() > 1.0 + 1e-6
-    }
+/// Whether [`tracer_filter`]'s profile goes negative somewhere (ringing
+/// at edges).
+pub fn has_negative_lobes(kind: FilterKind) -> bool {
+    tracer_filter(kind).weight_magnitude() > 1.0 + 1e-6
 }
 
 /// How samples become a filtered pixel.
@@ -203,20 +131,6 @@ impl FromStr for FilterMode {
 
     fn from_str(name: &str) -> Result<Self, Self::Err> {
         crate::shared::by_name(&FilterMode::ALL, name, FilterMode::name, "filter mode")
-    }
-}
-
-impl fmt::Display for Filter {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
-impl FromStr for Filter {
-    type Err = String;
-
-    fn from_str(name: &str) -> Result<Self, Self::Err> {
-        crate::shared::by_name(&Filter::ALL, name, Filter::name, "filter")
     }
 }
 
@@ -392,17 +306,25 @@ pub fn render<P: PixelSampler>(
     height: u32,
     sampler: &P,
     dimension: u32,
-    filter: Filter,
+    filter: FilterKind,
     mode: FilterMode,
 ) -> Image {
     let pixels = match (filter, mode) {
         (_, FilterMode::Importance | FilterMode::ImportanceMean) => {
+            let filter = &tracer_filter(filter);
             render_importance(scene, width, height, sampler, dimension, filter, mode)
         }
-        (Filter::Box, FilterMode::Weighted) => render_box(scene, width, height, sampler, dimension),
-        (_, FilterMode::Weighted) => {
-            render_filtered(scene, width, height, sampler, dimension, filter)
+        (FilterKind::Box, FilterMode::Weighted) => {
+            render_box(scene, width, height, sampler, dimension)
         }
+        (_, FilterMode::Weighted) => render_filtered(
+            scene,
+            width,
+            height,
+            sampler,
+            dimension,
+            &tracer_filter(filter),
+        ),
     };
     Image {
         width,
@@ -485,7 +407,7 @@ fn render_importance<P: PixelSampler>(
     height: u32,
     sampler: &P,
     dimension: u32,
-    filter: Filter,
+    filter: &AnyFilter,
     mode: FilterMode,
 ) -> Vec<Rgb> {
     let mut pixels = vec![[0.0; 3]; width as usize * height as usize];
@@ -517,15 +439,14 @@ fn importance_sums<P: PixelSampler>(
     height: u32,
     sampler: &P,
     dimension: u32,
-    filter: Filter,
+    filter: &AnyFilter,
     px: u32,
     py: u32,
 ) -> [f64; 4] {
-    let library = filter.library();
     let mut sum = [0.0f64; 4];
     for index in 0..spp(sampler) {
         let u = sampler.sample_pixel([px, py], index, dimension);
-        let s = library.sample(u);
+        let s = filter.sample(u);
         let x = f64::from(px) + 0.5 + f64::from(s.offset.x);
         let y = f64::from(py) + 0.5 + f64::from(s.offset.y);
         if !(0.0..f64::from(width)).contains(&x) || !(0.0..f64::from(height)).contains(&y) {
@@ -551,7 +472,7 @@ pub fn importance_pixel<P: PixelSampler>(
     height: u32,
     sampler: &P,
     dimension: u32,
-    filter: Filter,
+    filter: &AnyFilter,
     px: u32,
     py: u32,
 ) -> Rgb {
@@ -576,7 +497,7 @@ pub fn importance_mean_pixel<P: PixelSampler>(
     height: u32,
     sampler: &P,
     dimension: u32,
-    filter: Filter,
+    filter: &AnyFilter,
     px: u32,
     py: u32,
 ) -> Rgb {
@@ -621,14 +542,13 @@ pub fn gauss_legendre<const N: usize>() -> ([f64; N], [f64; N]) {
 
 /// The integral of `filter`'s normalised 1D profile centred at `centre`
 /// over `[0, limit]`: 1 when the support is inside.
-fn film_mass(filter: Filter, centre: f64, limit: f64) -> f64 {
-    let r = filter.radius();
+fn film_mass(filter: &AnyFilter, centre: f64, limit: f64) -> f64 {
+    let r = f64::from(filter.radius());
     if centre - r >= 0.0 && centre + r <= limit {
         return 1.0;
     }
     let (nodes, weights) = gauss_legendre::<8>();
-    filter
-        .breaks()
+    breaks(filter.kind())
         .windows(2)
         .map(|pair| ((centre + pair[0]).max(0.0), (centre + pair[1]).min(limit)))
         .filter(|(a, b)| b > a)
@@ -637,7 +557,7 @@ fn film_mass(filter: Filter, centre: f64, limit: f64) -> f64 {
             nodes
                 .iter()
                 .zip(&weights)
-                .map(|(t, w)| w * half * filter.weight_1d(a + (t + 1.0) * half - centre))
+                .map(|(t, w)| w * half * filter.evaluate_1d(a + (t + 1.0) * half - centre))
                 .sum::<f64>()
         })
         .sum()
@@ -661,9 +581,9 @@ fn render_filtered<P: PixelSampler>(
     height: u32,
     sampler: &P,
     dimension: u32,
-    filter: Filter,
+    filter: &AnyFilter,
 ) -> Vec<Rgb> {
-    let radius = filter.radius();
+    let radius = f64::from(filter.radius());
     // A sample at y in [sy, sy + 1) reaches pixel rows whose centre
     // py + 1/2 is within `radius`, which is at most `margin` rows away.
     let margin = (radius - 0.5).ceil() as i64;
@@ -690,13 +610,13 @@ fn render_filtered<P: PixelSampler>(
                         let y_hi =
                             ((y - 0.5 + radius).ceil() as i64 - 1).min(band_y0 + band_rows - 1);
                         for py in y_lo..=y_hi {
-                            let wy = filter.weight_1d(y - (py as f64 + 0.5));
+                            let wy = filter.evaluate_1d(y - (py as f64 + 0.5));
                             if wy == 0.0 {
                                 continue;
                             }
                             let row = ((py - band_y0) * i64::from(width)) as usize;
                             for px in x_lo..=x_hi {
-                                let w = wy * filter.weight_1d(x - (px as f64 + 0.5));
+                                let w = wy * filter.evaluate_1d(x - (px as f64 + 0.5));
                                 let sum = &mut sums[row + px as usize];
                                 sum[0] += w * radiance[0];
                                 sum[1] += w * radiance[1];
@@ -773,7 +693,7 @@ mod tests {
             let Some(scene) = scene_kind.film(width, height) else {
                 continue;
             };
-            for filter in Filter::ALL {
+            for &filter in FilterKind::ALL {
                 for mode in FilterMode::ALL {
                     for kind in [
                         TracerSampler::Pixel(PixelSamplerKind::Padded(
@@ -797,32 +717,33 @@ mod tests {
 
     #[test]
     fn filters_are_normalised_and_vanish_at_their_radius() {
-        for filter in Filter::ALL {
-            let r = filter.radius();
-            assert_eq!(filter.weight_1d(r * (1.0 + 1e-9)), 0.0, "{filter}");
-            assert_eq!(filter.weight_1d(-r * (1.0 + 1e-9)), 0.0, "{filter}");
+        for &kind in FilterKind::ALL {
+            let filter = tracer_filter(kind);
+            let r = f64::from(filter.radius());
+            assert_eq!(filter.evaluate_1d(r * (1.0 + 1e-9)), 0.0, "{kind}");
+            assert_eq!(filter.evaluate_1d(-r * (1.0 + 1e-9)), 0.0, "{kind}");
             // Midpoint rule over the support, piece by piece between the
             // breaks: the library's profiles integrate to 1.
             let n = 100_000;
-            let integral: f64 = filter
-                .breaks()
+            let integral: f64 = breaks(kind)
                 .windows(2)
                 .map(|pair| {
                     let h = (pair[1] - pair[0]) / f64::from(n);
                     (0..n)
-                        .map(|i| filter.weight_1d(pair[0] + (f64::from(i) + 0.5) * h) * h)
+                        .map(|i| filter.evaluate_1d(pair[0] + (f64::from(i) + 0.5) * h) * h)
                         .sum::<f64>()
                 })
                 .sum();
-            assert!((integral - 1.0).abs() < 1e-6, "{filter}: {integral}");
-            assert_eq!((filter.breaks()[0], filter.breaks().last()), (-r, Some(&r)));
+            assert!((integral - 1.0).abs() < 1e-6, "{kind}: {integral}");
+            assert_eq!((breaks(kind)[0], breaks(kind).last()), (-r, Some(&r)));
         }
         // Ringing needs negative lobes: Mitchell and Lanczos have them.
-        let ringing: Vec<Filter> = Filter::ALL
-            .into_iter()
-            .filter(|f| f.has_negative_lobes())
+        let ringing: Vec<FilterKind> = FilterKind::ALL
+            .iter()
+            .copied()
+            .filter(|&kind| has_negative_lobes(kind))
             .collect();
-        assert_eq!(ringing, [Filter::Mitchell, Filter::Lanczos]);
+        assert_eq!(ringing, [FilterKind::Mitchell, FilterKind::Lanczos]);
     }
 
     #[test]
@@ -838,7 +759,7 @@ mod tests {
             64,
             &sampler,
             FILM_DIMENSION,
-            Filter::Box,
+            FilterKind::Box,
             FilterMode::Weighted,
         );
         assert_eq!(image.pixels[32 * 64 + 20], crate::scenes::Polygon::YELLOW);
@@ -857,9 +778,10 @@ mod tests {
             PixelSamplerKind::ZSobol,
         ] {
             let sampler = TracerSampler::Pixel(kind).build(16, 64, 64, 3).unwrap();
-            for filter in Filter::ALL {
+            for &filter in FilterKind::ALL {
+                let library = &tracer_filter(filter);
                 let pixel =
-                    importance_pixel(&scene, 64, 64, &sampler, FILM_DIMENSION, filter, 20, 32);
+                    importance_pixel(&scene, 64, 64, &sampler, FILM_DIMENSION, library, 20, 32);
                 assert_eq!(pixel, crate::scenes::Polygon::YELLOW, "{filter} {kind}");
             }
         }
@@ -874,13 +796,15 @@ mod tests {
         let scene = SceneKind::Polygon.film(64, 64).unwrap();
         let yellow = crate::scenes::Polygon::YELLOW;
         let kind = TracerSampler::Pixel(PixelSamplerKind::Padded(SamplerKind::Random));
-        for filter in [Filter::Box, Filter::Tent, Filter::Gaussian] {
+        for filter in [FilterKind::Box, FilterKind::Tent, FilterKind::Gaussian] {
             let sampler = kind.build(16, 64, 64, 3).unwrap();
+            let library = &tracer_filter(filter);
             let pixel =
-                importance_mean_pixel(&scene, 64, 64, &sampler, FILM_DIMENSION, filter, 20, 32);
+                importance_mean_pixel(&scene, 64, 64, &sampler, FILM_DIMENSION, library, 20, 32);
             assert_eq!(pixel, yellow, "{filter}");
         }
-        for filter in [Filter::Mitchell, Filter::Lanczos] {
+        for filter in [FilterKind::Mitchell, FilterKind::Lanczos] {
+            let library = &tracer_filter(filter);
             let frames = 400;
             let mean: f64 = (0..frames)
                 .map(|frame| {
@@ -891,7 +815,7 @@ mod tests {
                         64,
                         &sampler,
                         FILM_DIMENSION,
-                        filter,
+                        library,
                         20,
                         32,
                     );
@@ -907,8 +831,9 @@ mod tests {
             );
         }
         // The clipped mass: half a tent at the film's edge, all inside.
-        assert!((film_mass(Filter::Tent, 0.0, 64.0) - 0.5).abs() < 1e-12);
-        assert_eq!(film_mass(Filter::Lanczos, 32.0, 64.0), 1.0);
+        let (tent, lanczos) = (FilterKind::Tent, FilterKind::Lanczos);
+        assert!((film_mass(&tracer_filter(tent), 0.0, 64.0) - 0.5).abs() < 1e-12);
+        assert_eq!(film_mass(&tracer_filter(lanczos), 32.0, 64.0), 1.0);
     }
 
     #[test]
@@ -919,14 +844,15 @@ mod tests {
         let sampler = TracerSampler::Pixel(PixelSamplerKind::Padded(SamplerKind::Random))
             .build(1, 64, 64, 0)
             .unwrap();
-        for filter in Filter::ALL {
+        for &filter in FilterKind::ALL {
+            let library = &tracer_filter(filter);
             for (px, py) in [(7, 11), (40, 30), (60, 5)] {
                 let u = sampler.sample_pixel([px, py], 0, FILM_DIMENSION);
-                let s = filter.library().sample(u);
+                let s = library.sample(u);
                 let x = f64::from(px) + 0.5 + f64::from(s.offset.x);
                 let y = f64::from(py) + 0.5 + f64::from(s.offset.y);
                 let pixel =
-                    importance_pixel(&scene, 64, 64, &sampler, FILM_DIMENSION, filter, px, py);
+                    importance_pixel(&scene, 64, 64, &sampler, FILM_DIMENSION, library, px, py);
                 assert_eq!(pixel, scene.radiance(x, y), "{filter} ({px}, {py})");
             }
         }
@@ -947,7 +873,7 @@ mod tests {
             32,
             &sampler,
             0,
-            Filter::Box,
+            FilterKind::Box,
             FilterMode::Weighted,
         );
         let sampled = render(
@@ -956,7 +882,7 @@ mod tests {
             32,
             &sampler,
             0,
-            Filter::Box,
+            FilterKind::Box,
             FilterMode::Importance,
         );
         assert!(plain.rmse(&sampled) < 1e-3, "{}", plain.rmse(&sampled));

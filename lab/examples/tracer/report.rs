@@ -3,11 +3,12 @@
 
 use std::fmt::Write as _;
 
+use wellspread::filter::FilterKind;
 use wellspread::{PixelSamplerKind, SamplerKind};
 
 use crate::cli::Options;
 use crate::cornell::Light;
-use crate::render::{Filter, FilterMode, SOBOL, TracerSampler};
+use crate::render::{FilterMode, SOBOL, TracerSampler, has_negative_lobes};
 use crate::scenes::SceneKind;
 
 /// One measured row: a scene, size, sampler and count, over `frames` frames.
@@ -18,7 +19,7 @@ pub struct Row {
     pub height: u32,
     pub sampler: TracerSampler,
     pub spp: u32,
-    pub filter: Filter,
+    pub filter: FilterKind,
     pub mode: FilterMode,
     /// The reference's least and greatest value over every pixel and
     /// channel: a filter with negative lobes overshoots the scene's range
@@ -319,7 +320,7 @@ fn filter_tables(options: &Options, rows: &[Row]) -> String {
                         ) == (scene, width, height, kind, spp, filter, mode)
                     })
                 };
-                let mut line = if filter.has_negative_lobes() {
+                let mut line = if has_negative_lobes(filter) {
                     format!("| {filter} (negative lobes) | {kind} |")
                 } else {
                     format!("| {filter} | {kind} |")
@@ -740,7 +741,7 @@ mod tests {
             height: 8,
             sampler,
             spp,
-            filter: Filter::Box,
+            filter: FilterKind::Box,
             mode: FilterMode::Weighted,
             reference_range: [0.0, 1.0],
             light: None,
