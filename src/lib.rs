@@ -5,18 +5,18 @@
 //!
 //! # A renderer's loop
 //!
-//! Pick a pixel sampler by name, start a [`Domain`] per pixel sample, take
-//! the camera sample first (film through the filter, lens, time), then
+//! Pick a pixel sampler and a filter by name, start a [`Domain`] per pixel
+//! sample, take the camera sample first (film through the filter, lens, time), then
 //! give each purpose its own keyed branch:
 //!
 //! ```
-//! use wellspread::filter::GaussianFilter;
+//! use wellspread::filter::FilterKind;
 //! use wellspread::{PixelSampler, PixelSamplerKind, warp};
 //!
 //! const BOUNCE: u32 = 1; // domain keys: any u32, one per purpose
 //!
 //! let sampler = "sobol".parse::<PixelSamplerKind>()?.build(16, [64, 48], 0)?;
-//! let filter = GaussianFilter::new(1.5, 0.5)?;
+//! let filter = "gaussian".parse::<FilterKind>()?.build(); // pbrt-v4's defaults
 //! let pixel = [12, 34];
 //! let (mut sum, mut weights) = (0.0, 0.0);
 //! for index in 0..16 {
@@ -107,8 +107,9 @@
 //!   (detected at run time, with `std`). Without it the crate is
 //!   `#![forbid(unsafe_code)]` and `fill` runs the portable loop only, with
 //!   bit-identical values: a build for auditors.
-//! - `serde` (off): `Serialize` / `Deserialize` for [`SamplerKind`], as its
-//!   kebab-case name (`"n-rooks"`), so settings files can name a sampler.
+//! - `serde` (off): `Serialize` / `Deserialize` for [`SamplerKind`],
+//!   [`PixelSamplerKind`] and [`FilterKind`](filter::FilterKind), as their
+//!   kebab-case names (`"n-rooks"`), so settings files can name them.
 //! - `rand` (off): [`Domain`] implements `rand_core::RngCore` (0.9), each
 //!   `next_u32` one 1D draw with the draw's 24 bits on top, so a renderer
 //!   written against `rand::Rng` gets `random::<f32>() == next_1d()`.

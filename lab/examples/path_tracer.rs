@@ -14,7 +14,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use clap::Parser;
-use wellspread::filter::GaussianFilter;
+use wellspread::filter::FilterKind;
 use wellspread::glam::Vec3;
 use wellspread::{CameraSample, Domain, PixelSampler, PixelSamplerKind, warp};
 
@@ -30,6 +30,9 @@ pub struct Args {
     /// Samples per pixel
     #[arg(long, default_value_t = 16, value_parser = shared::whole_number)]
     spp: u32,
+    /// Pixel filter: box, tent, gaussian, mitchell, lanczos, blackman-harris
+    #[arg(long, default_value = "gaussian")]
+    filter: FilterKind,
     /// The animation frame: each frame gets new patterns
     #[arg(long, default_value_t = 0, value_parser = shared::whole_number)]
     frame: u32,
@@ -156,7 +159,7 @@ fn main() -> ExitCode {
     }) else {
         return ExitCode::from(2);
     };
-    let filter = GaussianFilter::new(1.5, 0.5).expect("pbrt-v4's default Gaussian");
+    let filter = args.filter.build(); // pbrt-v4's parameters
     let mut bytes = Vec::with_capacity((SIZE[0] * SIZE[1] * 3) as usize);
     // Gamma 2.2, clamped to 8 bits.
     let encode = |c: f32| (255.0 * c.max(0.0).powf(1.0 / 2.2)).min(255.0) as u8;

@@ -232,6 +232,32 @@ impl FromStr for PixelSamplerKind {
     }
 }
 
+/// `PixelSamplerKind` in settings files (feature `serde`): serialized as
+/// its [`name`](PixelSamplerKind::name), deserialized from it with the
+/// same error as [`FromStr`].
+#[cfg(feature = "serde")]
+mod serde_impls {
+    use serde::de::{Deserialize, Deserializer};
+    use serde::ser::{Serialize, Serializer};
+
+    use super::PixelSamplerKind;
+
+    impl Serialize for PixelSamplerKind {
+        fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+            serializer.serialize_str(self.name())
+        }
+    }
+
+    impl<'de> Deserialize<'de> for PixelSamplerKind {
+        fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+            crate::error::deserialize_name(
+                deserializer,
+                "a pixel sampler name such as \"sobol\" or \"blue-noise\"",
+            )
+        }
+    }
+}
+
 /// Any pixel sampler, chosen at run time (`Copy`, `'static`, enum
 /// dispatch with no allocation). Made by [`PixelSamplerKind::build`].
 ///

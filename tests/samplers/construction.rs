@@ -236,6 +236,20 @@ fn filter_kinds_serialize_as_their_names() {
     );
 }
 
+/// Pixel samplers in settings files too: every kind as its name, aliases
+/// and any case accepted, an unknown name the parser's error.
+#[cfg(feature = "serde")]
+#[test]
+fn pixel_sampler_kinds_serialize_as_their_names() {
+    use wellspread::PixelSamplerKind;
+    let all: Vec<PixelSamplerKind> = PixelSamplerKind::all().collect();
+    serialize_as_names(&all, "\"zsobl\"", "unknown pixel sampler \"zsobl\"");
+    assert_eq!(
+        serde_json::from_str::<PixelSamplerKind>("\"LHS\"").unwrap(),
+        PixelSamplerKind::LatinHypercube
+    );
+}
+
 // ---- Constructors and errors ----
 
 #[test]
