@@ -11,13 +11,13 @@
 //!    every coordinate in `[0, 1)`. Give it a checked constructor that
 //!    returns [`Error`](crate::Error) for sizes it cannot keep its
 //!    guarantees at.
-//! 2. **Its draws.** Implement [`DomainSampler`]: `domain_2d(index,
-//!    stream)` turns a draw's 64-bit stream into the sampler's
-//!    randomisation (derive keys from it; [`second_stream`] gives a
-//!    second, independent one) and returns sample `index` of it; the 1D,
-//!    3D and 4D draws have padded defaults ([`stratified_1d`] is the
-//!    stratified 1D draw every grid sampler uses). Then
-//!    [`Padded`](crate::Padded)`<YourSampler>` is a
+//! 2. **Its draws.** Implement [`DomainSampler`]; an empty impl takes the
+//!    defaults: `domain_2d(index, stream)` is `sample(index, stream as
+//!    u32)`, the 1D draw is [`stratified_1d`], the 3D and 4D draws pad
+//!    pairs with a [`second_stream`], and indices past `len` start a new
+//!    pass (return `true` from `is_progressive` for a sequence). Override
+//!    a draw to make it better (derive its keys from the 64-bit stream).
+//!    Then [`Padded`](crate::Padded)`<YourSampler>` is a
 //!    [`PixelSampler`](crate::PixelSampler), and every draw of a
 //!    [`Domain`](crate::Domain) is an independent pattern of your set.
 //! 3. **Or a pixel sampler of its own** (a sampler that knows the pixel,

@@ -117,6 +117,7 @@
 //! With neither, the crate is `no_std` and the samplers and hashes still
 //! work. No feature changes a sample value.
 #![no_std]
+#![cfg_attr(docsrs, feature(doc_cfg))]
 // `unsafe` is denied everywhere but in `simd`, the one audited module:
 // calling a function compiled for AVX2 or AVX-512 after detecting the CPU.
 // Without the `simd` feature there is none at all.

@@ -39,6 +39,7 @@
 //! assert!(metrics::star_discrepancy(&points)? < 0.05);
 //! # Ok::<(), wellspread::Error>(())
 //! ```
+#![cfg_attr(docsrs, doc(cfg(feature = "alloc")))]
 
 mod discrepancy;
 mod distance;

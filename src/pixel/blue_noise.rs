@@ -32,10 +32,10 @@ const DIGITS: u32 = 24;
 /// hill-climb on the blurred error that scores each candidate by running
 /// `BlueNoise::with_columns` with it, so under exactly this sampler's
 /// randomisation. It climbed entries 0..8 (the 2 x 2 to 16 x 16 levels of
-/// the pixel hierarchy) for its default three sweeps from an earlier
-/// search's table (`docs/blue_noise.md`, The search, compares the two:
-/// the worst blurred ratio fell from 0.82 to 0.78); the rest are that
-/// search's pseudo-random start, 24 random digits each (so the coarse
+/// the pixel hierarchy) for its default three sweeps, starting from the
+/// table of a first search (`docs/blue_noise.md`, The search, measures
+/// the two tables against each other); the rest are that first search's
+/// pseudo-random start, 24 random digits each (so the coarse
 /// levels flip the top digits too, which keeps the dimension pairs of a
 /// pixel independent). `ExplicitColumns::new` accepts them
 /// (`the_columns_are_independent`): together with the first 16 Sobol

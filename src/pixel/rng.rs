@@ -66,6 +66,7 @@ fn bits_24(v: f32) -> u32 {
 /// assert!(seen.iter().all(|&s| s));
 /// # Ok::<(), wellspread::Error>(())
 /// ```
+#[cfg_attr(docsrs, doc(cfg(feature = "rand")))]
 impl<S: PixelSampler> RngCore for Domain<S> {
     #[inline]
     fn next_u32(&mut self) -> u32 {

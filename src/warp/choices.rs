@@ -264,6 +264,7 @@ fn positive_pmf(p: f64) -> f32 {
 ///
 /// Pharr, Jakob & Humphreys 2023, *Physically Based Rendering*, 4th ed.,
 /// section A.1 (sampling discrete distributions, remapping the sample).
+#[cfg_attr(docsrs, doc(cfg(feature = "alloc")))]
 #[cfg(feature = "alloc")]
 #[derive(Clone, Debug, PartialEq)]
 pub struct Discrete {
@@ -446,6 +447,7 @@ impl Discrete {
 ///   Variables with General Distributions", ACM TOMS 3(3).
 /// - Vose 1991, "A Linear Algorithm for Generating Random Numbers with a
 ///   Given Distribution", IEEE Transactions on Software Engineering 17(9).
+#[cfg_attr(docsrs, doc(cfg(feature = "alloc")))]
 #[cfg(feature = "alloc")]
 #[derive(Clone, Debug, PartialEq)]
 pub struct AliasTable {

@@ -65,7 +65,9 @@ struct WsDraw {
     stream: vec2<u32>,
 }
 
-// `Draw::new(key, draw, index, pixel_state)`.
+// `Draw::new(key, draw, dimension, index, pixel_state)` without the
+// `dimension` and `key` fields, which only `PaddedNd` reads and WGSL has no
+// twin of: the same `index`, `pixel_state` and `stream`.
 fn ws_draw(key: vec2<u32>, draw: u32, index: u32, pixel_state: u32) -> WsDraw {
     return WsDraw(index, pixel_state, ws_mix64(ws_add64(key, ws_mul64(vec2<u32>(draw, 0u), WS_SALT_DRAW_WEYL))));
 }

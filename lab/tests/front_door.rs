@@ -1,11 +1,21 @@
 //! What a new user meets first: the links of the README and the pages
 //! under `docs/`, the command that regenerates each page, and the files
-//! `.ci/run` names.
+//! `.ci/run` names. These are checks of the repository, not of the
+//! library, so they live in the unpublished lab rather than in the
+//! published crate's tests/ (whose package has no lab/, .ci/ or gpu/).
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
+
+/// The repository's root: the lab is its `lab/` folder.
+fn repository() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .unwrap()
+        .to_owned()
+}
 
 fn read(path: &str) -> String {
-    let full = Path::new(env!("CARGO_MANIFEST_DIR")).join(path);
+    let full = repository().join(path);
     std::fs::read_to_string(&full).unwrap_or_else(|e| panic!("{}: {e}", full.display()))
 }
 
@@ -19,7 +29,7 @@ fn link_targets(text: &str) -> Vec<&str> {
 
 #[test]
 fn every_relative_link_in_the_readme_and_docs_exists() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = repository();
     for page in [
         "README.md",
         "docs/tracer.md",
@@ -98,7 +108,7 @@ fn docs_pages_start_with_their_regeneration_command_and_machine() {
 
 #[test]
 fn ci_script_names_only_files_that_exist() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = repository();
     let script = read(".ci/run");
     for word in script.split(|c: char| c.is_whitespace() || c == '(' || c == ')') {
         let word = word.trim_matches(|c: char| c == ',' || c == '.' || c == ':');
@@ -115,7 +125,7 @@ fn ci_script_names_only_files_that_exist() {
 /// root finds nothing since the lab moved out of the library.
 #[test]
 fn commands_name_lab_programs_that_exist() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = repository();
     let mut pages = vec!["README.md".to_owned(), "ARCHITECTURE.md".to_owned()];
     for entry in std::fs::read_dir(root.join("docs")).unwrap() {
         let name = entry.unwrap().file_name().into_string().unwrap();
