@@ -15,6 +15,17 @@ use crate::shared::{self, Failure};
 
 /// What the tracer writes and how it exits; shown under `--help`.
 const HELP: &str = "\
+What runs: with none of --scene, --sampler, --spp, --full and --docs, a
+short run (seconds on two cores, the references included): checker
+192x192 and cornell 64x64 at 16 spp with random, jittered, sobol and
+zsobol (and pcg32 in cornell), the trade tables on stdout, then the paths
+of the pictures and contact sheets it wrote. --full is the measurement
+run: every scene at its sizes, every sampler, each scene's counts (1, 4,
+16, 64, 256; 4, 16 for cornell at 128x128). With --scene, --sampler or
+--spp, a list not given is the full one (every scene, every sampler, each
+scene's counts and sizes). --docs writes the docs page's tables, so it
+implies --full.
+
 Output, under --out (default out/), per scene as <scene>-<W>x<H>-<filter>/
 (<scene>-<W>x<H>-<filter>-<mode>/ for the sampled --filter-mode values,
 cornell-<W>x<H>-box-area-light/ for --light area):
@@ -121,7 +132,21 @@ pub struct Cli {
     /// FILE must be a regular file)
     #[arg(long, value_name = "FILE")]
     docs: Option<PathBuf>,
+    /// The measurement run: every scene, sampler and count (the default
+    /// without --scene, --sampler, --spp is a short run instead)
+    #[arg(long)]
+    full: bool,
 }
+
+/// The short run's scenes, samplers (pcg32 renders cornell only) and
+/// count: what the README's first command renders, a few seconds on two
+/// cores including the references a fresh clone has not cached.
+const SHORT_SCENES: [SceneKind; 2] = [SceneKind::Checker, SceneKind::Cornell];
+const SHORT_SAMPLERS: [&str; 5] = ["random", "jittered", "sobol", "zsobol", "pcg32"];
+const SHORT_SPP: u32 = 16;
+/// cornell in the short run: a quarter of the full run's pixels, so that
+/// its reference (4096 samples per pixel) takes seconds, not a minute.
+const SHORT_CORNELL_SIZE: (u32, u32) = (64, 64);
 
 /// The run, with defaults filled in and lists deduplicated.
 #[derive(Clone, Debug, PartialEq)]
@@ -144,6 +169,9 @@ pub struct Options {
     pub out: PathBuf,
     pub report: Option<PathBuf>,
     pub docs: Option<PathBuf>,
+    /// The short run (no --scene, --sampler, --spp, --full or --docs):
+    /// cornell renders at [`SHORT_CORNELL_SIZE`] unless --size says.
+    pub short: bool,
     /// One-line notes for standard error: the samplers asked for that do
     /// not apply to a scene of the run, and the scenes left out for it.
     pub notes: Vec<String>,
@@ -193,19 +221,37 @@ impl Options {
                 mode_names.join(",")
             )));
         }
-        let all_scenes: Vec<SceneKind> = SceneKind::ALL
-            .into_iter()
+        let short = !cli.full
+            && cli.docs.is_none()
+            && cli.scenes.is_empty()
+            && cli.samplers.is_empty()
+            && cli.spps.is_empty();
+        let default_scenes: &[SceneKind] = if short {
+            &SHORT_SCENES
+        } else {
+            &SceneKind::ALL
+        };
+        let all_scenes: Vec<SceneKind> = default_scenes
+            .iter()
+            .copied()
             .filter(|scene| box_only || !path_traced(scene))
             .collect();
-        let spps = (!cli.spps.is_empty()).then(|| {
-            let mut spps = dedup(cli.spps);
+        let spps = if short { vec![SHORT_SPP] } else { cli.spps };
+        let spps = (!spps.is_empty()).then(|| {
+            let mut spps = dedup(spps);
             // Ascending, for the log-log interpolation between counts.
             spps.sort_unstable();
             spps
         });
         let scenes = or_all(cli.scenes, all_scenes);
         let asked_samplers = !cli.samplers.is_empty();
-        let samplers = or_all(cli.samplers, TracerSampler::all());
+        let all_samplers = if short {
+            let parse = |name: &str| name.parse().expect("a short-run sampler name");
+            SHORT_SAMPLERS.map(parse).to_vec()
+        } else {
+            TracerSampler::all()
+        };
+        let samplers = or_all(cli.samplers, all_samplers);
         let (scenes, notes) = scenes_with_samplers(scenes, &samplers, asked_samplers)?;
         let lights = or_all(cli.lights, vec![Light::default()]);
         if lights.len() > 1
@@ -249,6 +295,7 @@ impl Options {
             out: cli.out,
             report: cli.report,
             docs: cli.docs,
+            short,
             notes,
         })
     }
@@ -274,6 +321,7 @@ impl Options {
     pub fn sizes_for(&self, scene: SceneKind) -> Vec<(u32, u32)> {
         match self.size {
             Some(size) => vec![size],
+            None if self.short && scene == SceneKind::Cornell => vec![SHORT_CORNELL_SIZE],
             None => scene.default_sizes().to_vec(),
         }
     }
@@ -460,26 +508,79 @@ pub(crate) mod tests {
     }
 
     #[test]
-    fn no_arguments_mean_everything() {
+    fn no_arguments_mean_the_short_run() {
         let options = run_options(&[]);
-        assert_eq!(options.scenes, SceneKind::ALL);
-        assert_eq!(options.samplers, TracerSampler::all());
-        assert!(
-            options
-                .samplers
-                .contains(&TracerSampler::Pixel(PixelSamplerKind::ZSobol))
-        );
-        assert_eq!(options.spps, None);
-        for scene in SceneKind::ALL {
-            assert_eq!(options.spps_for(scene), scene.default_spps());
-            assert_eq!(options.sizes_for(scene), scene.default_sizes());
-        }
-        assert_eq!(options.filters, [Filter::Box]);
-        assert_eq!(options.modes, [FilterMode::Weighted]);
-        assert_eq!((options.frame, options.frames), (0, None));
-        assert_eq!(options.frame_range(SceneKind::Moire), 0..=0);
+        assert!(options.short);
+        assert_eq!(options.scenes, [SceneKind::Checker, SceneKind::Cornell]);
+        let names: Vec<&str> = options.samplers.iter().map(|s| s.name()).collect();
+        assert_eq!(names, ["random", "jittered", "sobol", "zsobol", "pcg32"]);
+        assert_eq!(options.spps, Some(vec![16]));
+        assert_eq!(options.sizes_for(SceneKind::Checker), [(192, 192)]);
+        assert_eq!(options.sizes_for(SceneKind::Cornell), [(64, 64)]);
+        // pcg32 is cornell's only: no note, as for every default list.
+        assert_eq!(options.samplers_for(SceneKind::Checker).len(), 4);
+        assert_eq!(options.notes, Vec::<String>::new());
         assert_eq!(options.frame_range(SceneKind::Cornell), 0..=3);
         assert_eq!(options.out, PathBuf::from("out"));
+        // --size and the other modifiers keep the short selection.
+        let options = run_options(&["--size", "32", "--frames", "1"]);
+        assert!(options.short);
+        assert_eq!(options.sizes_for(SceneKind::Cornell), [(32, 32)]);
+        assert_eq!(options.spps, Some(vec![16]));
+        // A wide filter leaves cornell out of the short run too.
+        assert_eq!(
+            run_options(&["--filter", "tent"]).scenes,
+            [SceneKind::Checker]
+        );
+    }
+
+    #[test]
+    fn full_and_docs_mean_everything() {
+        for list in [
+            &["--full"][..],
+            &["--docs", "d.md"],
+            &["--full", "--docs", "d.md"],
+        ] {
+            let options = run_options(list);
+            assert!(!options.short, "{list:?}");
+            assert_eq!(options.scenes, SceneKind::ALL);
+            assert_eq!(options.samplers, TracerSampler::all());
+            assert!(
+                options
+                    .samplers
+                    .contains(&TracerSampler::Pixel(PixelSamplerKind::ZSobol))
+            );
+            assert_eq!(options.spps, None);
+            for scene in SceneKind::ALL {
+                assert_eq!(options.spps_for(scene), scene.default_spps());
+                assert_eq!(options.sizes_for(scene), scene.default_sizes());
+            }
+            assert_eq!(options.filters, [Filter::Box]);
+            assert_eq!(options.modes, [FilterMode::Weighted]);
+            assert_eq!((options.frame, options.frames), (0, None));
+            assert_eq!(options.frame_range(SceneKind::Moire), 0..=0);
+            assert_eq!(options.frame_range(SceneKind::Cornell), 0..=3);
+        }
+        // Any list flag is a measurement run: the lists not given are full.
+        for (flag, value) in [
+            ("--scene", "cornell"),
+            ("--sampler", "sobol"),
+            ("--spp", "4"),
+        ] {
+            let options = run_options(&[flag, value]);
+            assert!(!options.short, "{flag}");
+            assert_eq!(
+                options.sizes_for(SceneKind::Cornell),
+                [(128, 128)],
+                "{flag}"
+            );
+        }
+        let options = run_options(&["--scene", "cornell"]);
+        assert_eq!(options.samplers, TracerSampler::all());
+        assert_eq!(options.spps_for(SceneKind::Cornell), [4, 16]);
+        let options = run_options(&["--spp", "4"]);
+        assert_eq!(options.scenes, SceneKind::ALL);
+        assert_eq!(options.samplers, TracerSampler::all());
     }
 
     #[test]
@@ -661,7 +762,7 @@ pub(crate) mod tests {
         let message = usage_error(&["--scene", "moire,cornell", "--filter", "gaussian"]);
         assert!(message.contains("--scene cornell"), "{message}");
         // A run of every scene under a wide filter leaves cornell out.
-        let options = run_options(&["--filter", "mitchell"]);
+        let options = run_options(&["--full", "--filter", "mitchell"]);
         assert!(!options.scenes.contains(&SceneKind::Cornell));
         assert_eq!(options.scenes.len(), SceneKind::ALL.len() - 1);
         assert!(run_options(&[]).scenes.contains(&SceneKind::Cornell));
@@ -768,6 +869,7 @@ pub(crate) mod tests {
             "--out",
             "--report",
             "--docs",
+            "--full",
             "--help",
         ] {
             assert!(help.contains(option), "{option} missing from --help");

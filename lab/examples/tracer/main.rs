@@ -5,7 +5,8 @@
 //! in one small file.
 //!
 //! ```sh
-//! cargo run --release -p wellspread-lab --example tracer                       # everything
+//! cargo run --release -p wellspread-lab --example tracer                       # a short run, seconds
+//! cargo run --release -p wellspread-lab --example tracer -- --full             # everything
 //! cargo run --release -p wellspread-lab --example tracer -- --scene moire --sampler regular,jittered --spp 16
 //! cargo run --release -p wellspread-lab --example tracer -- --scene moire-resolved --sampler sobol,zsobol --spp 4,16 --frames 16
 //! cargo run --release -p wellspread-lab --example tracer -- --help
@@ -165,7 +166,7 @@ fn run(options: &Options, stdout: &mut dyn Write) -> Result<(), Failure> {
     }
     progress.finish();
     let tables = markdown_tables(options, &rows);
-    writeln!(stdout, "{tables}")
+    writeln!(stdout, "{tables}\n{}", pictures_written(&runs))
         .map_err(|e| Failure::Io(format!("cannot write the tables: {e}")))?;
     if let Some(path) = &options.report {
         fs::write(path, json_report(&rows)).map_err(|e| write_error(path, e))?;
@@ -185,11 +186,36 @@ fn run(options: &Options, stdout: &mut dyn Write) -> Result<(), Failure> {
     Ok(())
 }
 
+/// The closing lines of a run's stdout: per scene directory, the contact
+/// and error sheets of each count, then the full frames and reference.
+fn pictures_written(runs: &[SceneRun]) -> String {
+    let mut text = String::from("Pictures written:\n");
+    for run in runs {
+        let dir = run.dir.display();
+        let mut frames = Vec::new();
+        for &(spp, ..) in &run.firsts {
+            text.push_str(&format!(
+                "- {dir}/contact-{spp}spp.png: contact sheet, the reference and every sampler, cropped\n\
+                 - {dir}/error-{spp}spp.png: each sampler's error image, same crop\n"
+            ));
+            let samplers = run.rows.iter().filter(|r| r.spp == spp);
+            frames.extend(samplers.map(|r| format!("{}-{spp}spp.png", r.sampler)));
+        }
+        text.push_str(&format!(
+            "- {dir}/: full frames {}, reference.png\n",
+            frames.join(", ")
+        ));
+    }
+    text
+}
+
 /// One scene at one size under one filter and mode: its rows, its
 /// reference, and per count the first sampler's first frame (for the
 /// filters' contact sheet).
 struct SceneRun {
     kind: SceneKind,
+    /// Where its pictures went.
+    dir: PathBuf,
     width: u32,
     height: u32,
     filter: Filter,
@@ -259,6 +285,7 @@ fn run_scene(
         progress.note(&format!("{}: wrote {}", job.label, job.dir.display()));
         runs.push(SceneRun {
             kind,
+            dir: job.dir.clone(),
             width,
             height,
             filter,
@@ -863,6 +890,28 @@ mod tests {
         let written = fs::read_to_string(&report).unwrap();
         let _ = fs::remove_dir_all(&out);
         assert!(written.starts_with('['), "{written}");
+    }
+
+    #[test]
+    fn a_run_ends_by_listing_the_pictures_it_wrote() {
+        let out = std::env::temp_dir().join(format!("tracer-pictures-{}", std::process::id()));
+        let mut options = run_options(&["--scene", "polygon", "--spp", "1", "--size", "4"]);
+        options.out = out.clone();
+        let mut stdout = Vec::new();
+        run(&options, &mut stdout).unwrap();
+        let stdout = String::from_utf8(stdout).unwrap();
+        let (_, list) = stdout.split_once("Pictures written:\n").unwrap();
+        let dir = out.join("polygon-4x4-box");
+        let contact = dir.join("contact-1spp.png");
+        assert!(
+            list.contains(&format!("- {}:", contact.display())),
+            "{list}"
+        );
+        assert!(contact.is_file() && dir.join("error-1spp.png").is_file());
+        assert!(list.contains("sobol-1spp.png"), "{list}");
+        assert!(dir.join("sobol-1spp.png").is_file());
+        assert!(stdout.trim_end().ends_with("reference.png"), "{stdout}");
+        let _ = fs::remove_dir_all(&out);
     }
 
     #[test]
