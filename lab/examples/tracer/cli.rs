@@ -8,7 +8,7 @@ use std::path::PathBuf;
 
 use clap::Parser;
 
-use crate::cornell::Light;
+use crate::cornell::{Draws, Light, MAX_BOUNCES};
 use crate::render::{Filter, FilterMode, TracerSampler};
 use crate::scenes::{Built, SceneKind};
 use crate::shared::{self, Failure};
@@ -28,7 +28,8 @@ implies --full.
 
 Output, under --out (default out/), per scene as <scene>-<W>x<H>-<filter>/
 (<scene>-<W>x<H>-<filter>-<mode>/ for the sampled --filter-mode values,
-cornell-<W>x<H>-box-area-light/ for --light area):
+cornell-<W>x<H>-box-area-light/ for --light area, -call-order and
+-depth<N> added for --draws call-order and --max-depth N):
   reference.png              the reference image every RMSE is measured
                              against: what infinitely many samples would give
                              under the same filter (exact or quadrature where
@@ -50,11 +51,13 @@ blurred RMSE per sampler and filter, each mode side by side), and
 filters-<scene>-<W>x<H>-<spp>spp.png under --out is a contact sheet of
 the first sampler's crop: one row per filter, the reference then each mode.
 The markdown tables go to stdout; --report writes the rows as JSON
-(scene, filter, filter_mode, light, sampler, spp, rmse, blurred_rmse,
-top_rmse, low_frequency_power, seconds, frames, width, height) and --docs
+(scene, filter, filter_mode, light, draws, max_depth, sampler, spp, rmse,
+blurred_rmse, top_rmse, off_light_rmse, low_frequency_power, seconds, frames, width,
+height) and --docs
 the tables as a markdown page headed by the command and machine (on a page
 that has them, only the text between the tracer's markers is replaced; a
---light comparison has markers of its own).
+--light comparison and a --draws or --max-depth run have markers of their
+own).
 With two --light values the cornell frames of the two take turns at each
 sampler and count, so that their times meet the same machine load.
 With --frames K (default 1, 4 for cornell, whose path-traced error is
@@ -109,6 +112,18 @@ pub struct Cli {
     /// them [default: solid-angle]
     #[arg(long = "light", value_name = "LIST", value_delimiter = ',', value_parser = parse_light)]
     lights: Vec<Light>,
+    /// Comma-separated draw layouts of cornell's paths: keyed (one branch
+    /// key per bounce and purpose), call-order (every number a successive
+    /// draw of the sample's root domain); pcg32 is call order always and
+    /// renders once. With both, or with --max-depth, the tables label each
+    /// row with its layout [default: keyed]
+    #[arg(long = "draws", value_name = "LIST", value_delimiter = ',', value_parser = parse_draws)]
+    draws: Vec<Draws>,
+    /// Bounces a cornell path makes at most, 1..=32: 1 is direct light
+    /// only (the camera ray's hit, next-event estimation there); its
+    /// reference is rendered at the same depth [default: 32]
+    #[arg(long = "max-depth", value_name = "N", value_parser = parse_depth)]
+    max_depth: Option<u32>,
     /// First frame (what a renderer passes per frame: the `frame` of
     /// pattern_seed, Padded, ZSobol and BlueNoise), 0 to 4294967295
     #[arg(long, alias = "seed", value_name = "N", default_value = "0", value_parser = shared::whole_number)]
@@ -162,6 +177,10 @@ pub struct Options {
     pub modes: Vec<FilterMode>,
     /// How cornell samples its light, in the order given.
     pub lights: Vec<Light>,
+    /// cornell's draw layouts, in the order given.
+    pub draws: Vec<Draws>,
+    /// The `--max-depth` asked for; `None`: [`MAX_BOUNCES`].
+    pub max_depth: Option<u32>,
     pub frame: u32,
     /// The `--frames` asked for; `None`: each scene's own.
     pub frames: Option<u32>,
@@ -263,6 +282,19 @@ impl Options {
                 names.join(",")
             )));
         }
+        let draws = or_all(cli.draws, vec![Draws::default()]);
+        let path_options = draws != [Draws::default()] || cli.max_depth.is_some();
+        if path_options && let Some(scene) = scenes.iter().find(|s| !path_traced(s)) {
+            return Err(Failure::Input(format!(
+                "--draws and --max-depth trace cornell's paths only, not {scene}'s: add --scene cornell"
+            )));
+        }
+        if draws.len() > 1 && lights.len() > 1 {
+            return Err(Failure::Input(
+                "compare --light or --draws, one at a time: give one of them a single value"
+                    .to_owned(),
+            ));
+        }
         let frames = cli.frames.unwrap_or_else(|| {
             let most = scenes.iter().map(|s| s.default_frames()).max();
             most.unwrap_or(1)
@@ -289,6 +321,8 @@ impl Options {
             filters,
             modes,
             lights,
+            draws,
+            max_depth: cli.max_depth,
             frame: cli.frame,
             frames: cli.frames,
             target: cli.target,
@@ -337,6 +371,36 @@ impl Options {
         match scene.build(1, 1) {
             Built::PathTraced => self.lights.clone(),
             Built::Film(_) => vec![Light::default()],
+        }
+    }
+
+    /// The bounces a cornell path makes at most.
+    pub fn depth(&self) -> u32 {
+        self.max_depth.unwrap_or(MAX_BOUNCES)
+    }
+
+    /// Whether the tables label rows with their draw layout: a comparison
+    /// of layouts, or a depth asked for.
+    pub fn labels_draws(&self) -> bool {
+        self.draws.len() > 1 || self.max_depth.is_some()
+    }
+
+    /// The draw layouts `scene` renders `sampler` with: cornell's
+    /// `--draws` list, but pcg32, call order whatever the layout, once
+    /// (under `call-order` when the list has it); one (unused) layout for
+    /// the other scenes.
+    pub fn draws_for(&self, scene: SceneKind, sampler: TracerSampler) -> Vec<Draws> {
+        match scene.build(1, 1) {
+            Built::Film(_) => vec![Draws::default()],
+            Built::PathTraced if sampler == TracerSampler::Pcg32 => {
+                let call_order = self.draws.contains(&Draws::CallOrder);
+                vec![if call_order {
+                    Draws::CallOrder
+                } else {
+                    self.draws[0]
+                }]
+            }
+            Built::PathTraced => self.draws.clone(),
         }
     }
 
@@ -435,6 +499,14 @@ fn parse_filter_mode(text: &str) -> Result<FilterMode, String> {
 
 fn parse_light(text: &str) -> Result<Light, String> {
     text.parse()
+}
+
+fn parse_draws(text: &str) -> Result<Draws, String> {
+    text.parse()
+}
+
+fn parse_depth(text: &str) -> Result<u32, String> {
+    parse_count(text, MAX_BOUNCES)
 }
 
 fn parse_count(text: &str, max: u32) -> Result<u32, String> {
@@ -758,6 +830,83 @@ pub(crate) mod tests {
     }
 
     #[test]
+    fn draws_and_max_depth_parse_as_cornell_options() {
+        let options = run_options(&[]);
+        assert_eq!(
+            (options.draws.as_slice(), options.max_depth),
+            (&[Draws::Keyed][..], None)
+        );
+        assert_eq!(options.depth(), MAX_BOUNCES);
+        assert!(!options.labels_draws());
+        let options = run_options(&[
+            "--scene",
+            "cornell",
+            "--draws",
+            "call-order,keyed,call-order",
+            "--max-depth",
+            "1",
+        ]);
+        assert_eq!(options.draws, [Draws::CallOrder, Draws::Keyed]);
+        assert_eq!((options.max_depth, options.depth()), (Some(1), 1));
+        assert!(options.labels_draws());
+        // pcg32 renders once, under call order; the others under each.
+        let pcg32 = TracerSampler::Pcg32;
+        assert_eq!(
+            options.draws_for(SceneKind::Cornell, pcg32),
+            [Draws::CallOrder]
+        );
+        assert_eq!(options.draws_for(SceneKind::Cornell, SOBOL), options.draws);
+        let keyed = run_options(&["--scene", "cornell", "--max-depth", "32"]);
+        assert!(keyed.labels_draws());
+        assert_eq!(keyed.draws_for(SceneKind::Cornell, pcg32), [Draws::Keyed]);
+        // Bad values: one line, status 2, the value named.
+        for (bad, named) in [
+            (
+                &["--scene", "cornell", "--draws", "random"][..],
+                "unknown draw layout \"random\"",
+            ),
+            (&["--scene", "cornell", "--draws", "keyed,"], "\"\""),
+            (
+                &["--scene", "cornell", "--max-depth", "0"],
+                "\"0\" is not an integer in 1..=32",
+            ),
+            (&["--scene", "cornell", "--max-depth", "33"], "\"33\""),
+            (
+                &["--scene", "cornell", "--max-depth", "-1"],
+                "must be non-negative",
+            ),
+            (&["--scene", "cornell", "--max-depth", "one"], "\"one\""),
+        ] {
+            let message = usage_error(bad);
+            assert!(message.contains(named), "{bad:?}: {message}");
+        }
+        let message = usage_error(&["--scene", "cornell", "--draws", "x"]);
+        assert!(
+            message.contains("keyed") && message.contains("call-order"),
+            "{message}"
+        );
+        // cornell's paths only.
+        for flags in [&["--max-depth", "1"][..], &["--draws", "call-order"]] {
+            let message = usage_error(flags);
+            assert!(
+                message.contains("add --scene cornell"),
+                "{flags:?}: {message}"
+            );
+            let message = usage_error(&[&["--scene", "moire"][..], flags].concat());
+            assert!(message.contains("not moire's"), "{flags:?}: {message}");
+        }
+        let message = usage_error(&[
+            "--scene",
+            "cornell",
+            "--light",
+            "area,solid-angle",
+            "--draws",
+            "keyed,call-order",
+        ]);
+        assert!(message.contains("one at a time"), "{message}");
+    }
+
+    #[test]
     fn cornell_is_box_filtered_only() {
         let message = usage_error(&["--scene", "moire,cornell", "--filter", "gaussian"]);
         assert!(message.contains("--scene cornell"), "{message}");
@@ -863,6 +1012,9 @@ pub(crate) mod tests {
             "--size",
             "--filter",
             "--filter-mode",
+            "--light",
+            "--draws",
+            "--max-depth",
             "--frame ",
             "--frames",
             "--target",

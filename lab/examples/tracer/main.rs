@@ -56,7 +56,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 
 use crate::analysis::{blurred_rmse, error_spectrum};
 use crate::cli::Options;
-use crate::cornell::Light;
+use crate::cornell::{Draws, Light, Tracing};
 use crate::output::{
     Crop, Picture, Series, Tile, contact_sheet, spectrum_svg, stack_rows, trade_plot_svg,
     viewing_zoom,
@@ -75,8 +75,9 @@ use crate::shared::Failure;
 /// the walls and back wall, the shading points nearest the light, without
 /// the light itself and its defocused edge (whose error comes from the
 /// film and lens, not from light sampling).
+/// A row's `off_light_rmse` is over the whole film without those pixels.
 const TOP_ROWS_DIVISOR: u32 = 4;
-const TOP_BRIGHTEST: f32 = 1.0;
+pub const TOP_BRIGHTEST: f32 = 1.0;
 
 /// Bins of the radially averaged error spectrum.
 const SPECTRUM_BINS: usize = 48;
@@ -121,7 +122,11 @@ fn run(options: &Options, stdout: &mut dyn Write) -> Result<(), Failure> {
             options.lights_for(s).len()
                 * options.sizes_for(s).len()
                 * options.spps_for(s).len()
-                * options.samplers_for(s).len()
+                * options
+                    .samplers_for(s)
+                    .into_iter()
+                    .map(|k| options.draws_for(s, k).len())
+                    .sum::<usize>()
                 * options.frames_for(s) as usize
         })
         .sum::<usize>()
@@ -227,10 +232,11 @@ struct SceneRun {
 }
 
 /// Renders one scene at one size under `filter` and `mode` with every
-/// requested sampler and count, once per light sampling in `lights`, and
-/// writes its pictures: one run per light. The lights take turns at each
-/// sampler and count, so their frame times are measured seconds apart and
-/// a change in the machine's load falls on both alike.
+/// requested sampler and count, once per light sampling in `lights` and
+/// draw layout of `--draws`, and writes its pictures: one run per light
+/// and layout. They take turns at each sampler and count, so their frame
+/// times are measured seconds apart and a change in the machine's load
+/// falls on all alike.
 fn run_scene(
     options: &Options,
     progress: &Progress,
@@ -239,16 +245,26 @@ fn run_scene(
     height: u32,
     (filter, mode, lights): (Filter, FilterMode, &[Light]),
 ) -> Result<Vec<SceneRun>, Failure> {
+    let draws = match kind.build(1, 1) {
+        Built::PathTraced => options.draws.clone(),
+        Built::Film(_) => vec![Draws::default()],
+    };
     let jobs = lights
         .iter()
-        .map(|&light| {
+        .flat_map(|&light| draws.iter().map(move |&draws| (light, draws)))
+        .map(|(light, draws)| {
+            let tracing = Tracing {
+                light,
+                draws,
+                max_depth: options.depth(),
+            };
             SceneJob::prepare(
                 options,
                 progress,
                 kind,
                 width,
                 height,
-                (filter, mode, light),
+                (filter, mode, tracing),
             )
         })
         .collect::<Result<Vec<_>, _>>()?;
@@ -258,6 +274,12 @@ fn run_scene(
         let mut frames: Vec<Vec<Frames>> = jobs.iter().map(|_| Vec::new()).collect();
         for sampler in options.samplers_for(kind) {
             for (j, job) in jobs.iter().enumerate() {
+                if !options
+                    .draws_for(kind, sampler)
+                    .contains(&job.tracing.draws)
+                {
+                    continue;
+                }
                 if let Some(f) = job.measure(sampler, spp)? {
                     rows[j].push(f.row.clone());
                     frames[j].push(f);
@@ -383,10 +405,11 @@ struct SceneJob<'a> {
     height: u32,
     filter: Filter,
     mode: FilterMode,
-    /// How the path-traced scene samples its light (unused by the others).
-    light: Light,
+    /// How the path-traced scene traces its paths (unused by the others).
+    tracing: Tracing,
     /// `<scene>-<W>x<H>-<filter>`, with `-importance` for that mode and
-    /// `-area-light` for cornell's area sampling, the directory's name.
+    /// `-area-light` for cornell's area sampling, `-call-order` and
+    /// `-depth<N>` for its draws and depth, the directory's name.
     label: String,
     dir: PathBuf,
     scene: Built,
@@ -415,23 +438,35 @@ impl<'a> SceneJob<'a> {
         kind: SceneKind,
         width: u32,
         height: u32,
-        (filter, mode, light): (Filter, FilterMode, Light),
+        (filter, mode, tracing): (Filter, FilterMode, Tracing),
     ) -> Result<Self, Failure> {
         let mut label = match mode {
             FilterMode::Weighted => format!("{kind}-{width}x{height}-{filter}"),
             _ => format!("{kind}-{width}x{height}-{filter}-{mode}"),
         };
         let path_traced = matches!(kind.build(1, 1), Built::PathTraced);
-        if path_traced && light != Light::default() {
-            label.push_str(&format!("-{light}-light"));
+        if path_traced && tracing.light != Light::default() {
+            label.push_str(&format!("-{}-light", tracing.light));
+        }
+        if path_traced && tracing.draws != Draws::default() {
+            label.push_str(&format!("-{}", tracing.draws));
+        }
+        if path_traced && options.max_depth.is_some() {
+            label.push_str(&format!("-depth{}", tracing.max_depth));
         }
         let dir = options.out.join(&label);
         fs::create_dir_all(&dir).map_err(|e| write_error(&dir, e))?;
         let scene = kind.build(width, height);
         let t = Instant::now();
-        let (reference, computed) =
-            reference::load_or_compute(&options.out, kind, &scene, width, height, filter)
-                .map_err(|e| Failure::Io(format!("reference for {label}: {e}")))?;
+        let (reference, computed) = reference::load_or_compute(
+            &options.out,
+            kind,
+            &scene,
+            width,
+            height,
+            (filter, tracing.max_depth),
+        )
+        .map_err(|e| Failure::Io(format!("reference for {label}: {e}")))?;
         let frames = options.frame_range(kind);
         progress.note(&format!(
             "{label}: reference {} in {:.2} s; frames {}..={}",
@@ -453,7 +488,7 @@ impl<'a> SceneJob<'a> {
             height,
             filter,
             mode,
-            light,
+            tracing,
             label,
             dir,
             scene,
@@ -471,6 +506,7 @@ impl<'a> SceneJob<'a> {
         let (width, height) = (self.width, self.height);
         let mut squares = (0.0, 0.0);
         let mut top_squares = 0.0;
+        let mut off_light_squares = 0.0;
         let mut spectrum = vec![0.0; SPECTRUM_BINS];
         let mut first: Option<(Image, f64, f64)> = None;
         let frames = options.frames_for(self.kind);
@@ -508,7 +544,7 @@ impl<'a> SceneJob<'a> {
                     spp,
                     frame_sampler,
                     sampler.film_lens(),
-                    self.light,
+                    self.tracing,
                 ),
             };
             // Only the first frame is timed; the others only add to the errors.
@@ -525,6 +561,10 @@ impl<'a> SceneJob<'a> {
                 i < top_pixels && reference[i].iter().all(|&v| v <= TOP_BRIGHTEST)
             });
             top_squares += top * top;
+            let off_light = image.rmse_where(&self.reference, |i| {
+                reference[i].iter().all(|&v| v <= TOP_BRIGHTEST)
+            });
+            off_light_squares += off_light * off_light;
             let blurred = blurred_rmse(&image, &self.reference);
             squares.1 += blurred * blurred;
             let frame_spectrum = error_spectrum(&image, &self.reference, SPECTRUM_BINS);
@@ -544,6 +584,7 @@ impl<'a> SceneJob<'a> {
             .write_png(&path)
             .map_err(|e| write_error(&path, e))?;
         let count = f64::from(frames);
+        let path_traced = matches!(self.scene, Built::PathTraced);
         let row = Row {
             scene: self.kind,
             width,
@@ -560,9 +601,13 @@ impl<'a> SceneJob<'a> {
                 .fold([f64::INFINITY, f64::NEG_INFINITY], |[low, high], &v| {
                     [low.min(f64::from(v)), high.max(f64::from(v))]
                 }),
-            light: matches!(self.scene, Built::PathTraced).then_some(self.light),
+            light: path_traced.then_some(self.tracing.light),
+            draws: (path_traced && options.labels_draws() && sampler != TracerSampler::Pcg32)
+                .then_some(self.tracing.draws),
+            max_depth: path_traced.then_some(self.tracing.max_depth),
             rmse: (squares.0 / count).sqrt(),
             top_rmse: (top_squares / count).sqrt(),
+            off_light_rmse: (off_light_squares / count).sqrt(),
             blurred_rmse: (squares.1 / count).sqrt(),
             low_power: low_frequency_power(&spectrum),
             seconds,
