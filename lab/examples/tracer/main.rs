@@ -75,8 +75,12 @@ use crate::shared::Failure;
 /// the walls and back wall, the shading points nearest the light, without
 /// the light itself and its defocused edge (whose error comes from the
 /// film and lens, not from light sampling).
-/// A row's `off_light_rmse` is over the whole film without those pixels.
+/// A row's `off_light_rmse` is over the whole film without the pixels
+/// within [`LIGHT_MARGIN`] pixels (horizontally, vertically or
+/// diagonally) of one whose reference passes [`TOP_BRIGHTEST`]: the light
+/// and its defocused edge, whose error the film and lens draws make.
 const TOP_ROWS_DIVISOR: u32 = 4;
+pub const LIGHT_MARGIN: u32 = 3;
 pub const TOP_BRIGHTEST: f32 = 1.0;
 
 /// Bins of the radially averaged error spectrum.
@@ -416,6 +420,26 @@ struct SceneJob<'a> {
     reference: Image,
     /// Pixels per film pixel in the full-frame PNGs.
     zoom: u32,
+    /// Per pixel: whether it counts in `off_light_rmse` ([`off_light`]).
+    off_light: Vec<bool>,
+}
+
+/// Per pixel of `reference`: whether no pixel within [`LIGHT_MARGIN`] of
+/// it passes [`TOP_BRIGHTEST`] in a channel.
+fn off_light(reference: &Image) -> Vec<bool> {
+    let (w, h) = (reference.width as i64, reference.height as i64);
+    let bright = |x: i64, y: i64| {
+        (0..w).contains(&x)
+            && (0..h).contains(&y)
+            && reference.pixels[(y * w + x) as usize]
+                .iter()
+                .any(|&v| v > TOP_BRIGHTEST)
+    };
+    let m = i64::from(LIGHT_MARGIN);
+    (0..h)
+        .flat_map(|y| (0..w).map(move |x| (x, y)))
+        .map(|(x, y)| !(-m..=m).any(|dy| (-m..=m).any(|dx| bright(x + dx, y + dy))))
+        .collect()
 }
 
 /// One sampler's frames at one count: its row, and what the pictures need.
@@ -492,6 +516,7 @@ impl<'a> SceneJob<'a> {
             label,
             dir,
             scene,
+            off_light: off_light(&reference),
             reference,
             zoom,
         })
@@ -561,9 +586,7 @@ impl<'a> SceneJob<'a> {
                 i < top_pixels && reference[i].iter().all(|&v| v <= TOP_BRIGHTEST)
             });
             top_squares += top * top;
-            let off_light = image.rmse_where(&self.reference, |i| {
-                reference[i].iter().all(|&v| v <= TOP_BRIGHTEST)
-            });
+            let off_light = image.rmse_where(&self.reference, |i| self.off_light[i]);
             off_light_squares += off_light * off_light;
             let blurred = blurred_rmse(&image, &self.reference);
             squares.1 += blurred * blurred;
@@ -967,6 +990,23 @@ mod tests {
         assert!(help.contains("Usage: tracer [OPTIONS]"), "{help}");
         let failure = main_with(["--size", "3x"].map(OsString::from), &mut Vec::new()).unwrap_err();
         assert_eq!(failure.status(), 2, "{failure}");
+    }
+
+    #[test]
+    fn off_light_leaves_out_the_light_and_its_margin() {
+        let mut reference = Image {
+            width: 12,
+            height: 9,
+            pixels: vec![[0.5; 3]; 12 * 9],
+        };
+        reference.pixels[4 * 12 + 5] = [0.5, 17.0, 0.5];
+        let mask = off_light(&reference);
+        for y in 0..9u32 {
+            for x in 0..12u32 {
+                let near = x.abs_diff(5) <= LIGHT_MARGIN && y.abs_diff(4) <= LIGHT_MARGIN;
+                assert_eq!(mask[(y * 12 + x) as usize], !near, "{x} {y}");
+            }
+        }
     }
 
     #[test]

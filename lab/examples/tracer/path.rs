@@ -3,7 +3,9 @@
 //!
 //! Every pixel sample starts one domain (`PixelSampler::start`), the path
 //! draws its film offset and lens point from it, and each bounce draws from
-//! `root.branch(BOUNCE).branch(b)` (the layout is in `cornell/mod.rs`). Film and
+//! `root.branch(BOUNCE).branch(b)`, one branch per purpose, or, with
+//! `--draws call-order`, from the root in call order (the layout is in
+//! `cornell/mod.rs`). Film and
 //! lens are one `next_4d` draw ([`FilmLens::Joint`]: for the sequences one
 //! point of a 4D Owen-scrambled Sobol' set, so depth of field keeps the
 //! coupled stratification) or two `next_2d` draws ([`FilmLens::Pairs`],
@@ -12,7 +14,8 @@
 //! The reference renders [`REFERENCE_SPP`] samples of `sobol` per pixel,
 //! every root moved to the branch [`REFERENCE_KEY`], so it shares no pattern
 //! with a compared frame, whatever its frame number, and samples the light
-//! by area ([`REFERENCE_LIGHT`]) whichever `--light` the frames use. It is
+//! by area ([`REFERENCE_LIGHT`]) whichever `--light` the frames use, with
+//! keyed draws, at the frames' `--max-depth`. It is
 //! cached under `out/` in a file named after a fingerprint of the scene and
 //! of the path tracer as the reference runs it, so a change to either
 //! recomputes it.

@@ -5,11 +5,11 @@ use std::fmt::Write as _;
 
 use wellspread::{PixelSamplerKind, SamplerKind};
 
-use crate::TOP_BRIGHTEST;
 use crate::cli::Options;
 use crate::cornell::{Draws, Light, MAX_BOUNCES};
 use crate::render::{Filter, FilterMode, SOBOL, TracerSampler};
 use crate::scenes::SceneKind;
+use crate::{LIGHT_MARGIN, TOP_BRIGHTEST};
 
 /// One measured row: a scene, size, sampler and count, over `frames` frames.
 #[derive(Clone, Debug)]
@@ -38,9 +38,10 @@ pub struct Row {
     /// The same over the top quarter of the film's rows only, the light's
     /// own pixels left out (see `TOP_ROWS_DIVISOR` in main.rs).
     pub top_rmse: f64,
-    /// The same over the whole film, the light's own pixels left out: at
-    /// `--max-depth 1` the light's defocused edge (film and lens draws)
-    /// outweighs the lit surfaces' light-sampling error in `rmse`.
+    /// The same over the whole film, the light and its edge left out (see
+    /// `LIGHT_MARGIN` in main.rs): at `--max-depth 1` the light's edge
+    /// (film and lens draws) outweighs the lit surfaces' light-sampling
+    /// error in `rmse`.
     pub off_light_rmse: f64,
     /// The same after the viewing blur ([`blurred_rmse`]).
     pub blurred_rmse: f64,
@@ -354,7 +355,7 @@ fn versus_pcg32(rows: &[Row]) -> Option<String> {
         if off_light {
             let _ = writeln!(
                 text,
-                "\nOff the light (RMSE^2 x time over the pixels whose reference is at most {TOP_BRIGHTEST} in every channel): {}.",
+                "\nOff the light (RMSE^2 x time over the pixels more than {LIGHT_MARGIN} pixels from any whose reference passes {TOP_BRIGHTEST}): {}.",
                 verdicts(Ratios::off_light_efficiency).join("; ")
             );
         }
