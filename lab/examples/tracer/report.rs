@@ -599,10 +599,8 @@ fn zsobol_versus_sobol(rows: &[Row]) -> Option<String> {
         };
         let _ = writeln!(
             text,
-            "| {} {}x{} | {} | {} | {:.3} | {:.3} | {low} |",
-            z.scene,
-            z.width,
-            z.height,
+            "| {} | {} | {} | {:.3} | {:.3} | {low} |",
+            scene_cell(z),
             z.spp,
             z.frames,
             z.blurred_rmse / s.blurred_rmse,
@@ -613,12 +611,22 @@ fn zsobol_versus_sobol(rows: &[Row]) -> Option<String> {
     Some(text)
 }
 
+/// A ratio table's first cell: the scene and size, and the draw layout
+/// where the run labels rows with it.
+fn scene_cell(r: &Row) -> String {
+    let layout = r
+        .draws
+        .map_or(String::new(), |d| format!(" ({})", d.name()));
+    format!("{} {}x{}{layout}", r.scene, r.width, r.height)
+}
+
 /// A ratio table: `heading`, then a line per pair of rows, the scene and
-/// size, then `columns` filled by `cells`. `None` when there is no pair.
+/// size (and the first row's layout, where `layout` says), then
+/// `columns` filled by `cells`. `None` when there is no pair.
 fn pair_table(
     heading: &str,
     columns: &[&str],
-    pairs: &[(&Row, &Row)],
+    (pairs, layout): (&[(&Row, &Row)], bool),
     cells: impl Fn(&Row, &Row) -> String,
 ) -> Option<String> {
     if pairs.is_empty() {
@@ -634,14 +642,12 @@ fn pair_table(
         rule.join(" | ")
     );
     for (a, b) in pairs {
-        let _ = writeln!(
-            text,
-            "| {} {}x{} | {} |",
-            a.scene,
-            a.width,
-            a.height,
-            cells(a, b)
-        );
+        let scene = if layout {
+            scene_cell(a)
+        } else {
+            format!("{} {}x{}", a.scene, a.width, a.height)
+        };
+        let _ = writeln!(text, "| {scene} | {} |", cells(a, b));
     }
     Some(text)
 }
@@ -664,7 +670,7 @@ fn joint_versus_pairs(rows: &[Row]) -> Option<String> {
             "blurred RMSE ratio",
             "time ratio",
         ],
-        &pairs,
+        (&pairs, true),
         |joint, paired| {
             format!(
                 "{} | {} | {:.3} | {:.3} | {:.2}",
@@ -702,7 +708,7 @@ fn call_order_versus_keyed(rows: &[Row]) -> Option<String> {
             "off-light RMSE ratio",
             "time ratio",
         ],
-        &pairs,
+        (&pairs, false),
         |call_order, keyed| {
             format!(
                 "{} | {} | {:.3} | {:.3} | {:.2}",
