@@ -61,7 +61,7 @@ fn docs_pages_start_with_their_regeneration_command_and_machine() {
     for (page, command) in [
         (
             "docs/tracer.md",
-            "cargo run --release -p wellspread-lab --example tracer -- --docs docs/tracer.md",
+            "cargo run --release -p wellspread-lab --example tracer -- --full --docs docs/tracer.md",
         ),
         (
             "docs/quality.md",
@@ -161,7 +161,7 @@ fn commands_name_lab_programs_that_exist() {
         }
     }
     assert!(named > 10, "only {named} commands found");
-    // The README's first command renders every scene; its second is the
+    // The README's first command is the tracer's short run; its second is the
     // library's `cargo test`, which builds none of the lab.
     let readme = read("README.md");
     let block = readme.split("```sh\n").nth(1).unwrap();

@@ -9,16 +9,28 @@ use std::path::PathBuf;
 use clap::Parser;
 use wellspread::filter::FilterKind;
 
-use crate::cornell::Light;
+use crate::cornell::{Draws, Light, MAX_BOUNCES};
 use crate::render::{FilterMode, TracerSampler};
 use crate::scenes::{Built, SceneKind};
 use crate::shared::{self, Failure};
 
 /// What the tracer writes and how it exits; shown under `--help`.
 const HELP: &str = "\
+What runs: with none of --scene, --sampler, --spp, --full and --docs, a
+short run (seconds on two cores, the references included): checker
+192x192 and cornell 64x64 at 16 spp with random, jittered, sobol and
+zsobol (and pcg32 in cornell), the trade tables on stdout, then the paths
+of the pictures and contact sheets it wrote. --full is the measurement
+run: every scene at its sizes, every sampler, each scene's counts (1, 4,
+16, 64, 256; 4, 16 for cornell at 128x128). With --scene, --sampler or
+--spp, a list not given is the full one (every scene, every sampler, each
+scene's counts and sizes). --docs writes the docs page's tables, so it
+implies --full.
+
 Output, under --out (default out/), per scene as <scene>-<W>x<H>-<filter>/
 (<scene>-<W>x<H>-<filter>-<mode>/ for the sampled --filter-mode values,
-cornell-<W>x<H>-box-area-light/ for --light area):
+cornell-<W>x<H>-box-area-light/ for --light area, -call-order and
+-depth<N> added for --draws call-order and --max-depth N):
   reference.png              the reference image every RMSE is measured
                              against: what infinitely many samples would give
                              under the same filter (exact or quadrature where
@@ -40,11 +52,13 @@ blurred RMSE per sampler and filter, each mode side by side), and
 filters-<scene>-<W>x<H>-<spp>spp.png under --out is a contact sheet of
 the first sampler's crop: one row per filter, the reference then each mode.
 The markdown tables go to stdout; --report writes the rows as JSON
-(scene, filter, filter_mode, light, sampler, spp, rmse, blurred_rmse,
-top_rmse, low_frequency_power, seconds, frames, width, height) and --docs
+(scene, filter, filter_mode, light, draws, max_depth, sampler, spp, rmse,
+blurred_rmse, top_rmse, off_light_rmse, low_frequency_power, seconds, frames, width,
+height) and --docs
 the tables as a markdown page headed by the command and machine (on a page
 that has them, only the text between the tracer's markers is replaced; a
---light comparison has markers of its own).
+--light comparison and a --draws or --max-depth run have markers of their
+own).
 With two --light values the cornell frames of the two take turns at each
 sampler and count, so that their times meet the same machine load.
 With --frames K (default 1, 4 for cornell, whose path-traced error is
@@ -99,6 +113,18 @@ pub struct Cli {
     /// them [default: solid-angle]
     #[arg(long = "light", value_name = "LIST", value_delimiter = ',', value_parser = parse_light)]
     lights: Vec<Light>,
+    /// Comma-separated draw layouts of cornell's paths: keyed (one branch
+    /// key per bounce and purpose), call-order (every number a successive
+    /// draw of the sample's root domain); pcg32 is call order always and
+    /// renders once. With both, or with --max-depth, the tables label each
+    /// row with its layout [default: keyed]
+    #[arg(long = "draws", value_name = "LIST", value_delimiter = ',', value_parser = parse_draws)]
+    draws: Vec<Draws>,
+    /// Bounces a cornell path makes at most, 1..=32: 1 is direct light
+    /// only (the camera ray's hit, next-event estimation there); its
+    /// reference is rendered at the same depth [default: 32]
+    #[arg(long = "max-depth", value_name = "N", value_parser = parse_depth)]
+    max_depth: Option<u32>,
     /// First frame (what a renderer passes per frame: the `frame` of
     /// pattern_seed, Padded, ZSobol and BlueNoise), 0 to 4294967295
     #[arg(long, alias = "seed", value_name = "N", default_value = "0", value_parser = shared::whole_number)]
@@ -122,7 +148,21 @@ pub struct Cli {
     /// FILE must be a regular file)
     #[arg(long, value_name = "FILE")]
     docs: Option<PathBuf>,
+    /// The measurement run: every scene, sampler and count (the default
+    /// without --scene, --sampler, --spp is a short run instead)
+    #[arg(long)]
+    full: bool,
 }
+
+/// The short run's scenes, samplers (pcg32 renders cornell only) and
+/// count: what the README's first command renders, a few seconds on two
+/// cores including the references a fresh clone has not cached.
+const SHORT_SCENES: [SceneKind; 2] = [SceneKind::Checker, SceneKind::Cornell];
+const SHORT_SAMPLERS: [&str; 5] = ["random", "jittered", "sobol", "zsobol", "pcg32"];
+const SHORT_SPP: u32 = 16;
+/// cornell in the short run: a quarter of the full run's pixels, so that
+/// its reference (4096 samples per pixel) takes seconds, not a minute.
+const SHORT_CORNELL_SIZE: (u32, u32) = (64, 64);
 
 /// The run, with defaults filled in and lists deduplicated.
 #[derive(Clone, Debug, PartialEq)]
@@ -138,6 +178,10 @@ pub struct Options {
     pub modes: Vec<FilterMode>,
     /// How cornell samples its light, in the order given.
     pub lights: Vec<Light>,
+    /// cornell's draw layouts, in the order given.
+    pub draws: Vec<Draws>,
+    /// The `--max-depth` asked for; `None`: [`MAX_BOUNCES`].
+    pub max_depth: Option<u32>,
     pub frame: u32,
     /// The `--frames` asked for; `None`: each scene's own.
     pub frames: Option<u32>,
@@ -145,6 +189,9 @@ pub struct Options {
     pub out: PathBuf,
     pub report: Option<PathBuf>,
     pub docs: Option<PathBuf>,
+    /// The short run (no --scene, --sampler, --spp, --full or --docs):
+    /// cornell renders at [`SHORT_CORNELL_SIZE`] unless --size says.
+    pub short: bool,
     /// One-line notes for standard error: the samplers asked for that do
     /// not apply to a scene of the run, and the scenes left out for it.
     pub notes: Vec<String>,
@@ -194,19 +241,37 @@ impl Options {
                 mode_names.join(",")
             )));
         }
-        let all_scenes: Vec<SceneKind> = SceneKind::ALL
-            .into_iter()
+        let short = !cli.full
+            && cli.docs.is_none()
+            && cli.scenes.is_empty()
+            && cli.samplers.is_empty()
+            && cli.spps.is_empty();
+        let default_scenes: &[SceneKind] = if short {
+            &SHORT_SCENES
+        } else {
+            &SceneKind::ALL
+        };
+        let all_scenes: Vec<SceneKind> = default_scenes
+            .iter()
+            .copied()
             .filter(|scene| box_only || !path_traced(scene))
             .collect();
-        let spps = (!cli.spps.is_empty()).then(|| {
-            let mut spps = dedup(cli.spps);
+        let spps = if short { vec![SHORT_SPP] } else { cli.spps };
+        let spps = (!spps.is_empty()).then(|| {
+            let mut spps = dedup(spps);
             // Ascending, for the log-log interpolation between counts.
             spps.sort_unstable();
             spps
         });
         let scenes = or_all(cli.scenes, all_scenes);
         let asked_samplers = !cli.samplers.is_empty();
-        let samplers = or_all(cli.samplers, TracerSampler::all());
+        let all_samplers = if short {
+            let parse = |name: &str| name.parse().expect("a short-run sampler name");
+            SHORT_SAMPLERS.map(parse).to_vec()
+        } else {
+            TracerSampler::all()
+        };
+        let samplers = or_all(cli.samplers, all_samplers);
         let (scenes, notes) = scenes_with_samplers(scenes, &samplers, asked_samplers)?;
         let lights = or_all(cli.lights, vec![Light::default()]);
         if lights.len() > 1
@@ -217,6 +282,19 @@ impl Options {
                 "--light {} compares light sampling in cornell only, not in {scene}: add --scene cornell",
                 names.join(",")
             )));
+        }
+        let draws = or_all(cli.draws, vec![Draws::default()]);
+        let path_options = draws != [Draws::default()] || cli.max_depth.is_some();
+        if path_options && let Some(scene) = scenes.iter().find(|s| !path_traced(s)) {
+            return Err(Failure::Input(format!(
+                "--draws and --max-depth trace cornell's paths only, not {scene}'s: add --scene cornell"
+            )));
+        }
+        if draws.len() > 1 && lights.len() > 1 {
+            return Err(Failure::Input(
+                "compare --light or --draws, one at a time: give one of them a single value"
+                    .to_owned(),
+            ));
         }
         let frames = cli.frames.unwrap_or_else(|| {
             let most = scenes.iter().map(|s| s.default_frames()).max();
@@ -244,12 +322,15 @@ impl Options {
             filters,
             modes,
             lights,
+            draws,
+            max_depth: cli.max_depth,
             frame: cli.frame,
             frames: cli.frames,
             target: cli.target,
             out: cli.out,
             report: cli.report,
             docs: cli.docs,
+            short,
             notes,
         })
     }
@@ -275,6 +356,7 @@ impl Options {
     pub fn sizes_for(&self, scene: SceneKind) -> Vec<(u32, u32)> {
         match self.size {
             Some(size) => vec![size],
+            None if self.short && scene == SceneKind::Cornell => vec![SHORT_CORNELL_SIZE],
             None => scene.default_sizes().to_vec(),
         }
     }
@@ -290,6 +372,36 @@ impl Options {
         match scene.build(1, 1) {
             Built::PathTraced => self.lights.clone(),
             Built::Film(_) => vec![Light::default()],
+        }
+    }
+
+    /// The bounces a cornell path makes at most.
+    pub fn depth(&self) -> u32 {
+        self.max_depth.unwrap_or(MAX_BOUNCES)
+    }
+
+    /// Whether the tables label rows with their draw layout: a comparison
+    /// of layouts, or a depth asked for.
+    pub fn labels_draws(&self) -> bool {
+        self.draws.len() > 1 || self.max_depth.is_some()
+    }
+
+    /// The draw layouts `scene` renders `sampler` with: cornell's
+    /// `--draws` list, but pcg32, call order whatever the layout, once
+    /// (under `call-order` when the list has it); one (unused) layout for
+    /// the other scenes.
+    pub fn draws_for(&self, scene: SceneKind, sampler: TracerSampler) -> Vec<Draws> {
+        match scene.build(1, 1) {
+            Built::Film(_) => vec![Draws::default()],
+            Built::PathTraced if sampler == TracerSampler::Pcg32 => {
+                let call_order = self.draws.contains(&Draws::CallOrder);
+                vec![if call_order {
+                    Draws::CallOrder
+                } else {
+                    self.draws[0]
+                }]
+            }
+            Built::PathTraced => self.draws.clone(),
         }
     }
 
@@ -391,6 +503,14 @@ fn parse_light(text: &str) -> Result<Light, String> {
     text.parse()
 }
 
+fn parse_draws(text: &str) -> Result<Draws, String> {
+    text.parse()
+}
+
+fn parse_depth(text: &str) -> Result<u32, String> {
+    parse_count(text, MAX_BOUNCES)
+}
+
 fn parse_count(text: &str, max: u32) -> Result<u32, String> {
     shared::non_negative(text)?;
     match text.parse::<u32>() {
@@ -462,26 +582,79 @@ pub(crate) mod tests {
     }
 
     #[test]
-    fn no_arguments_mean_everything() {
+    fn no_arguments_mean_the_short_run() {
         let options = run_options(&[]);
-        assert_eq!(options.scenes, SceneKind::ALL);
-        assert_eq!(options.samplers, TracerSampler::all());
-        assert!(
-            options
-                .samplers
-                .contains(&TracerSampler::Pixel(PixelSamplerKind::ZSobol))
-        );
-        assert_eq!(options.spps, None);
-        for scene in SceneKind::ALL {
-            assert_eq!(options.spps_for(scene), scene.default_spps());
-            assert_eq!(options.sizes_for(scene), scene.default_sizes());
-        }
-        assert_eq!(options.filters, [FilterKind::Box]);
-        assert_eq!(options.modes, [FilterMode::Weighted]);
-        assert_eq!((options.frame, options.frames), (0, None));
-        assert_eq!(options.frame_range(SceneKind::Moire), 0..=0);
+        assert!(options.short);
+        assert_eq!(options.scenes, [SceneKind::Checker, SceneKind::Cornell]);
+        let names: Vec<&str> = options.samplers.iter().map(|s| s.name()).collect();
+        assert_eq!(names, ["random", "jittered", "sobol", "zsobol", "pcg32"]);
+        assert_eq!(options.spps, Some(vec![16]));
+        assert_eq!(options.sizes_for(SceneKind::Checker), [(192, 192)]);
+        assert_eq!(options.sizes_for(SceneKind::Cornell), [(64, 64)]);
+        // pcg32 is cornell's only: no note, as for every default list.
+        assert_eq!(options.samplers_for(SceneKind::Checker).len(), 4);
+        assert_eq!(options.notes, Vec::<String>::new());
         assert_eq!(options.frame_range(SceneKind::Cornell), 0..=3);
         assert_eq!(options.out, PathBuf::from("out"));
+        // --size and the other modifiers keep the short selection.
+        let options = run_options(&["--size", "32", "--frames", "1"]);
+        assert!(options.short);
+        assert_eq!(options.sizes_for(SceneKind::Cornell), [(32, 32)]);
+        assert_eq!(options.spps, Some(vec![16]));
+        // A wide filter leaves cornell out of the short run too.
+        assert_eq!(
+            run_options(&["--filter", "tent"]).scenes,
+            [SceneKind::Checker]
+        );
+    }
+
+    #[test]
+    fn full_and_docs_mean_everything() {
+        for list in [
+            &["--full"][..],
+            &["--docs", "d.md"],
+            &["--full", "--docs", "d.md"],
+        ] {
+            let options = run_options(list);
+            assert!(!options.short, "{list:?}");
+            assert_eq!(options.scenes, SceneKind::ALL);
+            assert_eq!(options.samplers, TracerSampler::all());
+            assert!(
+                options
+                    .samplers
+                    .contains(&TracerSampler::Pixel(PixelSamplerKind::ZSobol))
+            );
+            assert_eq!(options.spps, None);
+            for scene in SceneKind::ALL {
+                assert_eq!(options.spps_for(scene), scene.default_spps());
+                assert_eq!(options.sizes_for(scene), scene.default_sizes());
+            }
+            assert_eq!(options.filters, [FilterKind::Box]);
+            assert_eq!(options.modes, [FilterMode::Weighted]);
+            assert_eq!((options.frame, options.frames), (0, None));
+            assert_eq!(options.frame_range(SceneKind::Moire), 0..=0);
+            assert_eq!(options.frame_range(SceneKind::Cornell), 0..=3);
+        }
+        // Any list flag is a measurement run: the lists not given are full.
+        for (flag, value) in [
+            ("--scene", "cornell"),
+            ("--sampler", "sobol"),
+            ("--spp", "4"),
+        ] {
+            let options = run_options(&[flag, value]);
+            assert!(!options.short, "{flag}");
+            assert_eq!(
+                options.sizes_for(SceneKind::Cornell),
+                [(128, 128)],
+                "{flag}"
+            );
+        }
+        let options = run_options(&["--scene", "cornell"]);
+        assert_eq!(options.samplers, TracerSampler::all());
+        assert_eq!(options.spps_for(SceneKind::Cornell), [4, 16]);
+        let options = run_options(&["--spp", "4"]);
+        assert_eq!(options.scenes, SceneKind::ALL);
+        assert_eq!(options.samplers, TracerSampler::all());
     }
 
     #[test]
@@ -659,11 +832,88 @@ pub(crate) mod tests {
     }
 
     #[test]
+    fn draws_and_max_depth_parse_as_cornell_options() {
+        let options = run_options(&[]);
+        assert_eq!(
+            (options.draws.as_slice(), options.max_depth),
+            (&[Draws::Keyed][..], None)
+        );
+        assert_eq!(options.depth(), MAX_BOUNCES);
+        assert!(!options.labels_draws());
+        let options = run_options(&[
+            "--scene",
+            "cornell",
+            "--draws",
+            "call-order,keyed,call-order",
+            "--max-depth",
+            "1",
+        ]);
+        assert_eq!(options.draws, [Draws::CallOrder, Draws::Keyed]);
+        assert_eq!((options.max_depth, options.depth()), (Some(1), 1));
+        assert!(options.labels_draws());
+        // pcg32 renders once, under call order; the others under each.
+        let pcg32 = TracerSampler::Pcg32;
+        assert_eq!(
+            options.draws_for(SceneKind::Cornell, pcg32),
+            [Draws::CallOrder]
+        );
+        assert_eq!(options.draws_for(SceneKind::Cornell, SOBOL), options.draws);
+        let keyed = run_options(&["--scene", "cornell", "--max-depth", "32"]);
+        assert!(keyed.labels_draws());
+        assert_eq!(keyed.draws_for(SceneKind::Cornell, pcg32), [Draws::Keyed]);
+        // Bad values: one line, status 2, the value named.
+        for (bad, named) in [
+            (
+                &["--scene", "cornell", "--draws", "random"][..],
+                "unknown draw layout \"random\"",
+            ),
+            (&["--scene", "cornell", "--draws", "keyed,"], "\"\""),
+            (
+                &["--scene", "cornell", "--max-depth", "0"],
+                "\"0\" is not an integer in 1..=32",
+            ),
+            (&["--scene", "cornell", "--max-depth", "33"], "\"33\""),
+            (
+                &["--scene", "cornell", "--max-depth", "-1"],
+                "must be non-negative",
+            ),
+            (&["--scene", "cornell", "--max-depth", "one"], "\"one\""),
+        ] {
+            let message = usage_error(bad);
+            assert!(message.contains(named), "{bad:?}: {message}");
+        }
+        let message = usage_error(&["--scene", "cornell", "--draws", "x"]);
+        assert!(
+            message.contains("keyed") && message.contains("call-order"),
+            "{message}"
+        );
+        // cornell's paths only.
+        for flags in [&["--max-depth", "1"][..], &["--draws", "call-order"]] {
+            let message = usage_error(flags);
+            assert!(
+                message.contains("add --scene cornell"),
+                "{flags:?}: {message}"
+            );
+            let message = usage_error(&[&["--scene", "moire"][..], flags].concat());
+            assert!(message.contains("not moire's"), "{flags:?}: {message}");
+        }
+        let message = usage_error(&[
+            "--scene",
+            "cornell",
+            "--light",
+            "area,solid-angle",
+            "--draws",
+            "keyed,call-order",
+        ]);
+        assert!(message.contains("one at a time"), "{message}");
+    }
+
+    #[test]
     fn cornell_is_box_filtered_only() {
         let message = usage_error(&["--scene", "moire,cornell", "--filter", "gaussian"]);
         assert!(message.contains("--scene cornell"), "{message}");
         // A run of every scene under a wide filter leaves cornell out.
-        let options = run_options(&["--filter", "mitchell"]);
+        let options = run_options(&["--full", "--filter", "mitchell"]);
         assert!(!options.scenes.contains(&SceneKind::Cornell));
         assert_eq!(options.scenes.len(), SceneKind::ALL.len() - 1);
         assert!(run_options(&[]).scenes.contains(&SceneKind::Cornell));
@@ -764,12 +1014,16 @@ pub(crate) mod tests {
             "--size",
             "--filter",
             "--filter-mode",
+            "--light",
+            "--draws",
+            "--max-depth",
             "--frame ",
             "--frames",
             "--target",
             "--out",
             "--report",
             "--docs",
+            "--full",
             "--help",
         ] {
             assert!(help.contains(option), "{option} missing from --help");

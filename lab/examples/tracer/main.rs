@@ -5,7 +5,8 @@
 //! in one small file.
 //!
 //! ```sh
-//! cargo run --release -p wellspread-lab --example tracer                       # everything
+//! cargo run --release -p wellspread-lab --example tracer                       # a short run, seconds
+//! cargo run --release -p wellspread-lab --example tracer -- --full             # everything
 //! cargo run --release -p wellspread-lab --example tracer -- --scene moire --sampler regular,jittered --spp 16
 //! cargo run --release -p wellspread-lab --example tracer -- --scene moire-resolved --sampler sobol,zsobol --spp 4,16 --frames 16
 //! cargo run --release -p wellspread-lab --example tracer -- --help
@@ -56,7 +57,7 @@ use wellspread::filter::FilterKind;
 
 use crate::analysis::{blurred_rmse, error_spectrum};
 use crate::cli::Options;
-use crate::cornell::Light;
+use crate::cornell::{Draws, Light, Tracing};
 use crate::output::{
     Crop, Picture, Series, Tile, contact_sheet, spectrum_svg, stack_rows, trade_plot_svg,
     viewing_zoom,
@@ -75,8 +76,13 @@ use crate::shared::Failure;
 /// the walls and back wall, the shading points nearest the light, without
 /// the light itself and its defocused edge (whose error comes from the
 /// film and lens, not from light sampling).
+/// A row's `off_light_rmse` is over the whole film without the pixels
+/// within [`LIGHT_MARGIN`] pixels (horizontally, vertically or
+/// diagonally) of one whose reference passes [`TOP_BRIGHTEST`]: the light
+/// and its defocused edge, whose error the film and lens draws make.
 const TOP_ROWS_DIVISOR: u32 = 4;
-const TOP_BRIGHTEST: f32 = 1.0;
+pub const LIGHT_MARGIN: u32 = 3;
+pub const TOP_BRIGHTEST: f32 = 1.0;
 
 /// Bins of the radially averaged error spectrum.
 const SPECTRUM_BINS: usize = 48;
@@ -121,7 +127,11 @@ fn run(options: &Options, stdout: &mut dyn Write) -> Result<(), Failure> {
             options.lights_for(s).len()
                 * options.sizes_for(s).len()
                 * options.spps_for(s).len()
-                * options.samplers_for(s).len()
+                * options
+                    .samplers_for(s)
+                    .into_iter()
+                    .map(|k| options.draws_for(s, k).len())
+                    .sum::<usize>()
                 * options.frames_for(s) as usize
         })
         .sum::<usize>()
@@ -166,7 +176,7 @@ fn run(options: &Options, stdout: &mut dyn Write) -> Result<(), Failure> {
     }
     progress.finish();
     let tables = markdown_tables(options, &rows);
-    writeln!(stdout, "{tables}")
+    writeln!(stdout, "{tables}\n{}", pictures_written(&runs))
         .map_err(|e| Failure::Io(format!("cannot write the tables: {e}")))?;
     if let Some(path) = &options.report {
         fs::write(path, json_report(&rows)).map_err(|e| write_error(path, e))?;
@@ -186,11 +196,36 @@ fn run(options: &Options, stdout: &mut dyn Write) -> Result<(), Failure> {
     Ok(())
 }
 
+/// The closing lines of a run's stdout: per scene directory, the contact
+/// and error sheets of each count, then the full frames and reference.
+fn pictures_written(runs: &[SceneRun]) -> String {
+    let mut text = String::from("Pictures written:\n");
+    for run in runs {
+        let dir = run.dir.display();
+        let mut frames = Vec::new();
+        for &(spp, ..) in &run.firsts {
+            text.push_str(&format!(
+                "- {dir}/contact-{spp}spp.png: contact sheet, the reference and every sampler, cropped\n\
+                 - {dir}/error-{spp}spp.png: each sampler's error image, same crop\n"
+            ));
+            let samplers = run.rows.iter().filter(|r| r.spp == spp);
+            frames.extend(samplers.map(|r| format!("{}-{spp}spp.png", r.sampler)));
+        }
+        text.push_str(&format!(
+            "- {dir}/: full frames {}, reference.png\n",
+            frames.join(", ")
+        ));
+    }
+    text
+}
+
 /// One scene at one size under one filter and mode: its rows, its
 /// reference, and per count the first sampler's first frame (for the
 /// filters' contact sheet).
 struct SceneRun {
     kind: SceneKind,
+    /// Where its pictures went.
+    dir: PathBuf,
     width: u32,
     height: u32,
     filter: FilterKind,
@@ -202,10 +237,11 @@ struct SceneRun {
 }
 
 /// Renders one scene at one size under `filter` and `mode` with every
-/// requested sampler and count, once per light sampling in `lights`, and
-/// writes its pictures: one run per light. The lights take turns at each
-/// sampler and count, so their frame times are measured seconds apart and
-/// a change in the machine's load falls on both alike.
+/// requested sampler and count, once per light sampling in `lights` and
+/// draw layout of `--draws`, and writes its pictures: one run per light
+/// and layout. They take turns at each sampler and count, so their frame
+/// times are measured seconds apart and a change in the machine's load
+/// falls on all alike.
 fn run_scene(
     options: &Options,
     progress: &Progress,
@@ -214,16 +250,26 @@ fn run_scene(
     height: u32,
     (filter, mode, lights): (FilterKind, FilterMode, &[Light]),
 ) -> Result<Vec<SceneRun>, Failure> {
+    let draws = match kind.build(1, 1) {
+        Built::PathTraced => options.draws.clone(),
+        Built::Film(_) => vec![Draws::default()],
+    };
     let jobs = lights
         .iter()
-        .map(|&light| {
+        .flat_map(|&light| draws.iter().map(move |&draws| (light, draws)))
+        .map(|(light, draws)| {
+            let tracing = Tracing {
+                light,
+                draws,
+                max_depth: options.depth(),
+            };
             SceneJob::prepare(
                 options,
                 progress,
                 kind,
                 width,
                 height,
-                (filter, mode, light),
+                (filter, mode, tracing),
             )
         })
         .collect::<Result<Vec<_>, _>>()?;
@@ -233,6 +279,12 @@ fn run_scene(
         let mut frames: Vec<Vec<Frames>> = jobs.iter().map(|_| Vec::new()).collect();
         for sampler in options.samplers_for(kind) {
             for (j, job) in jobs.iter().enumerate() {
+                if !options
+                    .draws_for(kind, sampler)
+                    .contains(&job.tracing.draws)
+                {
+                    continue;
+                }
                 if let Some(f) = job.measure(sampler, spp)? {
                     rows[j].push(f.row.clone());
                     frames[j].push(f);
@@ -260,6 +312,7 @@ fn run_scene(
         progress.note(&format!("{}: wrote {}", job.label, job.dir.display()));
         runs.push(SceneRun {
             kind,
+            dir: job.dir.clone(),
             width,
             height,
             filter,
@@ -357,16 +410,37 @@ struct SceneJob<'a> {
     height: u32,
     filter: FilterKind,
     mode: FilterMode,
-    /// How the path-traced scene samples its light (unused by the others).
-    light: Light,
+    /// How the path-traced scene traces its paths (unused by the others).
+    tracing: Tracing,
     /// `<scene>-<W>x<H>-<filter>`, with `-importance` for that mode and
-    /// `-area-light` for cornell's area sampling, the directory's name.
+    /// `-area-light` for cornell's area sampling, `-call-order` and
+    /// `-depth<N>` for its draws and depth, the directory's name.
     label: String,
     dir: PathBuf,
     scene: Built,
     reference: Image,
     /// Pixels per film pixel in the full-frame PNGs.
     zoom: u32,
+    /// Per pixel: whether it counts in `off_light_rmse` ([`off_light`]).
+    off_light: Vec<bool>,
+}
+
+/// Per pixel of `reference`: whether no pixel within [`LIGHT_MARGIN`] of
+/// it passes [`TOP_BRIGHTEST`] in a channel.
+fn off_light(reference: &Image) -> Vec<bool> {
+    let (w, h) = (reference.width as i64, reference.height as i64);
+    let bright = |x: i64, y: i64| {
+        (0..w).contains(&x)
+            && (0..h).contains(&y)
+            && reference.pixels[(y * w + x) as usize]
+                .iter()
+                .any(|&v| v > TOP_BRIGHTEST)
+    };
+    let m = i64::from(LIGHT_MARGIN);
+    (0..h)
+        .flat_map(|y| (0..w).map(move |x| (x, y)))
+        .map(|(x, y)| !(-m..=m).any(|dy| (-m..=m).any(|dx| bright(x + dx, y + dy))))
+        .collect()
 }
 
 /// One sampler's frames at one count: its row, and what the pictures need.
@@ -389,23 +463,35 @@ impl<'a> SceneJob<'a> {
         kind: SceneKind,
         width: u32,
         height: u32,
-        (filter, mode, light): (FilterKind, FilterMode, Light),
+        (filter, mode, tracing): (FilterKind, FilterMode, Tracing),
     ) -> Result<Self, Failure> {
         let mut label = match mode {
             FilterMode::Weighted => format!("{kind}-{width}x{height}-{filter}"),
             _ => format!("{kind}-{width}x{height}-{filter}-{mode}"),
         };
         let path_traced = matches!(kind.build(1, 1), Built::PathTraced);
-        if path_traced && light != Light::default() {
-            label.push_str(&format!("-{light}-light"));
+        if path_traced && tracing.light != Light::default() {
+            label.push_str(&format!("-{}-light", tracing.light));
+        }
+        if path_traced && tracing.draws != Draws::default() {
+            label.push_str(&format!("-{}", tracing.draws));
+        }
+        if path_traced && options.max_depth.is_some() {
+            label.push_str(&format!("-depth{}", tracing.max_depth));
         }
         let dir = options.out.join(&label);
         fs::create_dir_all(&dir).map_err(|e| write_error(&dir, e))?;
         let scene = kind.build(width, height);
         let t = Instant::now();
-        let (reference, computed) =
-            reference::load_or_compute(&options.out, kind, &scene, width, height, filter)
-                .map_err(|e| Failure::Io(format!("reference for {label}: {e}")))?;
+        let (reference, computed) = reference::load_or_compute(
+            &options.out,
+            kind,
+            &scene,
+            width,
+            height,
+            (filter, tracing.max_depth),
+        )
+        .map_err(|e| Failure::Io(format!("reference for {label}: {e}")))?;
         let frames = options.frame_range(kind);
         progress.note(&format!(
             "{label}: reference {} in {:.2} s; frames {}..={}",
@@ -427,10 +513,11 @@ impl<'a> SceneJob<'a> {
             height,
             filter,
             mode,
-            light,
+            tracing,
             label,
             dir,
             scene,
+            off_light: off_light(&reference),
             reference,
             zoom,
         })
@@ -445,6 +532,7 @@ impl<'a> SceneJob<'a> {
         let (width, height) = (self.width, self.height);
         let mut squares = (0.0, 0.0);
         let mut top_squares = 0.0;
+        let mut off_light_squares = 0.0;
         let mut spectrum = vec![0.0; SPECTRUM_BINS];
         let mut first: Option<(Image, f64, f64)> = None;
         let frames = options.frames_for(self.kind);
@@ -482,7 +570,7 @@ impl<'a> SceneJob<'a> {
                     spp,
                     frame_sampler,
                     sampler.film_lens(),
-                    self.light,
+                    self.tracing,
                 ),
             };
             // Only the first frame is timed; the others only add to the errors.
@@ -499,6 +587,8 @@ impl<'a> SceneJob<'a> {
                 i < top_pixels && reference[i].iter().all(|&v| v <= TOP_BRIGHTEST)
             });
             top_squares += top * top;
+            let off_light = image.rmse_where(&self.reference, |i| self.off_light[i]);
+            off_light_squares += off_light * off_light;
             let blurred = blurred_rmse(&image, &self.reference);
             squares.1 += blurred * blurred;
             let frame_spectrum = error_spectrum(&image, &self.reference, SPECTRUM_BINS);
@@ -518,6 +608,7 @@ impl<'a> SceneJob<'a> {
             .write_png(&path)
             .map_err(|e| write_error(&path, e))?;
         let count = f64::from(frames);
+        let path_traced = matches!(self.scene, Built::PathTraced);
         let row = Row {
             scene: self.kind,
             width,
@@ -534,9 +625,13 @@ impl<'a> SceneJob<'a> {
                 .fold([f64::INFINITY, f64::NEG_INFINITY], |[low, high], &v| {
                     [low.min(f64::from(v)), high.max(f64::from(v))]
                 }),
-            light: matches!(self.scene, Built::PathTraced).then_some(self.light),
+            light: path_traced.then_some(self.tracing.light),
+            draws: (path_traced && options.labels_draws() && sampler != TracerSampler::Pcg32)
+                .then_some(self.tracing.draws),
+            max_depth: path_traced.then_some(self.tracing.max_depth),
             rmse: (squares.0 / count).sqrt(),
             top_rmse: (top_squares / count).sqrt(),
+            off_light_rmse: (off_light_squares / count).sqrt(),
             blurred_rmse: (squares.1 / count).sqrt(),
             low_power: low_frequency_power(&spectrum),
             seconds,
@@ -867,6 +962,28 @@ mod tests {
     }
 
     #[test]
+    fn a_run_ends_by_listing_the_pictures_it_wrote() {
+        let out = std::env::temp_dir().join(format!("tracer-pictures-{}", std::process::id()));
+        let mut options = run_options(&["--scene", "polygon", "--spp", "1", "--size", "4"]);
+        options.out = out.clone();
+        let mut stdout = Vec::new();
+        run(&options, &mut stdout).unwrap();
+        let stdout = String::from_utf8(stdout).unwrap();
+        let (_, list) = stdout.split_once("Pictures written:\n").unwrap();
+        let dir = out.join("polygon-4x4-box");
+        let contact = dir.join("contact-1spp.png");
+        assert!(
+            list.contains(&format!("- {}:", contact.display())),
+            "{list}"
+        );
+        assert!(contact.is_file() && dir.join("error-1spp.png").is_file());
+        assert!(list.contains("sobol-1spp.png"), "{list}");
+        assert!(dir.join("sobol-1spp.png").is_file());
+        assert!(stdout.trim_end().ends_with("reference.png"), "{stdout}");
+        let _ = fs::remove_dir_all(&out);
+    }
+
+    #[test]
     fn help_and_bad_arguments_render_nothing() {
         let mut stdout = Vec::new();
         main_with(["--help"].map(OsString::from), &mut stdout).unwrap();
@@ -874,6 +991,23 @@ mod tests {
         assert!(help.contains("Usage: tracer [OPTIONS]"), "{help}");
         let failure = main_with(["--size", "3x"].map(OsString::from), &mut Vec::new()).unwrap_err();
         assert_eq!(failure.status(), 2, "{failure}");
+    }
+
+    #[test]
+    fn off_light_leaves_out_the_light_and_its_margin() {
+        let mut reference = Image {
+            width: 12,
+            height: 9,
+            pixels: vec![[0.5; 3]; 12 * 9],
+        };
+        reference.pixels[4 * 12 + 5] = [0.5, 17.0, 0.5];
+        let mask = off_light(&reference);
+        for y in 0..9u32 {
+            for x in 0..12u32 {
+                let near = x.abs_diff(5) <= LIGHT_MARGIN && y.abs_diff(4) <= LIGHT_MARGIN;
+                assert_eq!(mask[(y * 12 + x) as usize], !near, "{x} {y}");
+            }
+        }
     }
 
     #[test]

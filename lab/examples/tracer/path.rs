@@ -3,7 +3,9 @@
 //!
 //! Every pixel sample starts one domain (`PixelSampler::start`), the path
 //! draws its film offset and lens point from it, and each bounce draws from
-//! `root.branch(BOUNCE).branch(b)` (the layout is in `cornell/mod.rs`). Film and
+//! `root.branch(BOUNCE).branch(b)`, one branch per purpose, or, with
+//! `--draws call-order`, from the root in call order (the layout is in
+//! `cornell/mod.rs`). Film and
 //! lens are one `next_4d` draw ([`FilmLens::Joint`]: for the sequences one
 //! point of a 4D Owen-scrambled Sobol' set, so depth of field keeps the
 //! coupled stratification) or two `next_2d` draws ([`FilmLens::Pairs`],
@@ -12,7 +14,8 @@
 //! The reference renders [`REFERENCE_SPP`] samples of `sobol` per pixel,
 //! every root moved to the branch [`REFERENCE_KEY`], so it shares no pattern
 //! with a compared frame, whatever its frame number, and samples the light
-//! by area ([`REFERENCE_LIGHT`]) whichever `--light` the frames use. It is
+//! by area ([`REFERENCE_LIGHT`]) whichever `--light` the frames use, with
+//! keyed draws, at the frames' `--max-depth`. It is
 //! cached under `out/` in a file named after a fingerprint of the scene and
 //! of the path tracer as the reference runs it, so a change to either
 //! recomputes it.
@@ -28,7 +31,7 @@ use rand_pcg::Pcg32;
 use wellspread::glam::{Vec2, Vec4};
 use wellspread::{AnyPixelSampler, Domain, PixelSampler, PixelSamplerKind, SamplerKind};
 
-use crate::cornell::{Light, PathSamples, SampleSource, render_cornell};
+use crate::cornell::{Light, PathSamples, SampleSource, Tracing, render_cornell};
 use crate::render::{FilmLens, Image};
 
 /// A [`SampleSource`] over a pixel sampler's domains.
@@ -175,14 +178,15 @@ impl PathSamples for Pcg32Samples {
 
 /// One frame of the Cornell box: samples `0..spp` of every pixel of
 /// `sampler`, film and lens drawn as `film_lens` says (a library
-/// sampler's), the light sampled as `light` says, box filter.
+/// sampler's), paths traced as `tracing` says (light sampling, draw
+/// layout, depth), box filter.
 pub fn render(
     width: u32,
     height: u32,
     spp: u32,
     sampler: FrameSampler,
     film_lens: FilmLens,
-    light: Light,
+    tracing: Tracing,
 ) -> Image {
     let pixels = match sampler {
         FrameSampler::Pixel(sampler) => {
@@ -192,9 +196,9 @@ pub fn render(
                 film_lens,
                 root_branch: None,
             };
-            render_cornell(width, height, spp, &source, light)
+            render_cornell(width, height, spp, &source, tracing)
         }
-        FrameSampler::Pcg32(source) => render_cornell(width, height, spp, &source, light),
+        FrameSampler::Pcg32(source) => render_cornell(width, height, spp, &source, tracing),
     };
     Image {
         width,
@@ -230,25 +234,36 @@ fn reference_source(spp: u32, width: u32, height: u32) -> Domains<AnyPixelSample
     }
 }
 
-/// The reference image at `width x height`: [`REFERENCE_SPP`] samples per
-/// pixel, see the module docs.
-pub fn reference(width: u32, height: u32) -> Image {
+/// How the reference traces paths of at most `max_depth` bounces:
+/// [`REFERENCE_LIGHT`], keyed draws.
+fn reference_tracing(max_depth: u32) -> Tracing {
+    Tracing {
+        max_depth,
+        ..Tracing::from(REFERENCE_LIGHT)
+    }
+}
+
+/// The reference image at `width x height` for paths of at most
+/// `max_depth` bounces: [`REFERENCE_SPP`] samples per pixel, see the
+/// module docs.
+pub fn reference(width: u32, height: u32, max_depth: u32) -> Image {
     let source = reference_source(REFERENCE_SPP, width, height);
+    let tracing = reference_tracing(max_depth);
     Image {
         width,
         height,
-        pixels: render_cornell(width, height, REFERENCE_SPP, &source, REFERENCE_LIGHT),
+        pixels: render_cornell(width, height, REFERENCE_SPP, &source, tracing),
     }
 }
 
 /// A fingerprint of the reference: [`REFERENCE_SPP`] and the bits of a
 /// tiny render of the scene (8 x 8 pixels, 4 samples each, about 400 rays),
 /// folded by FNV-1a. Any change to the geometry, materials, camera, layout,
-/// estimator or reference count changes it, so a cached reference keyed by
-/// it is never stale.
-pub fn fingerprint() -> u32 {
+/// estimator, depth (`max_depth`, as [`reference`] takes it) or reference
+/// count changes it, so a cached reference keyed by it is never stale.
+pub fn fingerprint(max_depth: u32) -> u32 {
     let source = reference_source(4, 8, 8);
-    let image = render_cornell(8, 8, 4, &source, REFERENCE_LIGHT);
+    let image = render_cornell(8, 8, 4, &source, reference_tracing(max_depth));
     REFERENCE_SPP
         .to_le_bytes()
         .into_iter()
@@ -266,30 +281,46 @@ pub fn fingerprint() -> u32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::cornell::{Draws, MAX_BOUNCES};
     use crate::render::{SOBOL, TracerSampler, one_and_two_threads, pixel_bits};
 
+    /// Keyed and call-order draws give different images (but pcg32's,
+    /// call order either way), each bit-identical for 1 and 2 threads.
     #[test]
     fn cornell_frames_are_bit_identical_for_one_and_two_threads() {
         let (one, two) = one_and_two_threads();
         let (width, height) = (24, 20);
-        // Every sampler, pcg32 included.
+        // Every sampler, pcg32 included, under both layouts, at full depth
+        // and direct light only.
         for sampler in TracerSampler::all() {
             let frame = sampler.frame(4, width, height, 3).unwrap();
-            let draw = || {
-                render(
-                    width,
-                    height,
-                    4,
-                    frame,
-                    sampler.film_lens(),
-                    Light::SolidAngle,
-                )
-            };
-            let (a, b) = (one.install(draw), two.install(draw));
-            assert_eq!(pixel_bits(&a.pixels), pixel_bits(&b.pixels), "{sampler}");
+            for max_depth in [MAX_BOUNCES, 1] {
+                let images = Draws::ALL.map(|draws| {
+                    let tracing = Tracing {
+                        light: Light::SolidAngle,
+                        draws,
+                        max_depth,
+                    };
+                    let draw = || render(width, height, 4, frame, sampler.film_lens(), tracing);
+                    let (a, b) = (one.install(draw), two.install(draw));
+                    let what = format!("{sampler} {draws} depth {max_depth}");
+                    assert_eq!(pixel_bits(&a.pixels), pixel_bits(&b.pixels), "{what}");
+                    a
+                });
+                let [keyed, call_order] = images;
+                if sampler == TracerSampler::Pcg32 {
+                    assert_eq!(keyed, call_order, "pcg32 depth {max_depth}");
+                } else {
+                    assert_ne!(keyed, call_order, "{sampler} depth {max_depth}");
+                }
+            }
         }
-        let a = one.install(fingerprint);
-        assert_eq!(a, two.install(fingerprint));
+        for max_depth in [MAX_BOUNCES, 1] {
+            let a = one.install(|| fingerprint(max_depth));
+            assert_eq!(a, two.install(|| fingerprint(max_depth)));
+        }
+        // The depth-1 reference is cached under a name of its own.
+        assert_ne!(fingerprint(1), fingerprint(MAX_BOUNCES));
     }
 
     /// A pcg32 path is one generator in call order: film and lens, then
@@ -333,7 +364,7 @@ mod tests {
                 4,
                 FrameSampler::Pcg32(Pcg32Source { frame }),
                 FilmLens::Joint,
-                Light::SolidAngle,
+                Light::SolidAngle.into(),
             )
         };
         assert_ne!(frame(0), frame(1));

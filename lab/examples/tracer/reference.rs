@@ -58,7 +58,8 @@ pub fn cache_path(
     out.join(format!("reference-{scene}-{width}x{height}-{filter}.bin"))
 }
 
-/// The reference image, from the cache when it holds a valid one.
+/// The reference image, from the cache when it holds a valid one
+/// (`max_depth`: the path-traced scene's depth, which the others ignore).
 /// Returns the image and whether it was computed (not loaded).
 pub fn load_or_compute(
     out: &Path,
@@ -66,13 +67,13 @@ pub fn load_or_compute(
     scene: &Built,
     width: u32,
     height: u32,
-    filter: FilterKind,
+    (filter, max_depth): (FilterKind, u32),
 ) -> io::Result<(Image, bool)> {
     let path = match scene {
         Built::Film(_) => cache_path(out, kind, width, height, filter),
         Built::PathTraced => out.join(format!(
             "reference-{kind}-{width}x{height}-{filter}-{:08x}.bin",
-            path::fingerprint()
+            path::fingerprint(max_depth)
         )),
     };
     if let Some(image) = read_cache(&path, width, height) {
@@ -80,7 +81,7 @@ pub fn load_or_compute(
     }
     let image = match scene {
         Built::Film(scene) => compute(scene, width, height, filter),
-        Built::PathTraced => path::reference(width, height),
+        Built::PathTraced => path::reference(width, height, max_depth),
     };
     write_cache(&path, &image)?;
     Ok((image, true))

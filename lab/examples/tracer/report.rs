@@ -7,9 +7,10 @@ use wellspread::filter::FilterKind;
 use wellspread::{PixelSamplerKind, SamplerKind};
 
 use crate::cli::Options;
-use crate::cornell::Light;
+use crate::cornell::{Draws, Light, MAX_BOUNCES};
 use crate::render::{FilterMode, SOBOL, TracerSampler, has_negative_lobes};
 use crate::scenes::SceneKind;
+use crate::{LIGHT_MARGIN, TOP_BRIGHTEST};
 
 /// One measured row: a scene, size, sampler and count, over `frames` frames.
 #[derive(Clone, Debug)]
@@ -27,11 +28,22 @@ pub struct Row {
     pub reference_range: [f64; 2],
     /// How the path-traced scene sampled its light; `None` for the others.
     pub light: Option<Light>,
+    /// The path-traced scene's draw layout where the run labels rows with
+    /// it (a `--draws` comparison or a `--max-depth`; never pcg32, call
+    /// order always); `None` otherwise.
+    pub draws: Option<Draws>,
+    /// The path-traced scene's depth; `None` for the others.
+    pub max_depth: Option<u32>,
     /// Root-mean-square over the frames of each frame's RMSE.
     pub rmse: f64,
     /// The same over the top quarter of the film's rows only, the light's
     /// own pixels left out (see `TOP_ROWS_DIVISOR` in main.rs).
     pub top_rmse: f64,
+    /// The same over the whole film, the light and its edge left out (see
+    /// `LIGHT_MARGIN` in main.rs): at `--max-depth 1` the light's edge
+    /// (film and lens draws) outweighs the lit surfaces' light-sampling
+    /// error in `rmse`.
+    pub off_light_rmse: f64,
     /// The same after the viewing blur ([`blurred_rmse`]).
     pub blurred_rmse: f64,
     /// Mean error power below 1/16 cycle per pixel, averaged over the
@@ -40,6 +52,50 @@ pub struct Row {
     /// Fastest time for the first frame.
     pub seconds: f64,
     pub frames: u32,
+}
+
+impl Row {
+    /// What a table calls the row's series: the sampler, with its draw
+    /// layout where the run labels it ("sobol (call order)").
+    pub fn label(&self) -> String {
+        series_label(self.sampler, self.draws)
+    }
+}
+
+/// A series' name in the tables: `sampler`, then `(keyed)` or `(call
+/// order)` where `draws` is given.
+fn series_label(sampler: TracerSampler, draws: Option<Draws>) -> String {
+    match draws {
+        None => sampler.name().to_owned(),
+        Some(draws) => format!("{sampler} ({})", draws.name().replace('-', " ")),
+    }
+}
+
+/// ", max depth N" for a heading of rows rendered below the full depth.
+fn depth_note(rows: &[&Row]) -> String {
+    match rows.iter().find_map(|r| r.max_depth) {
+        Some(depth) if depth != MAX_BOUNCES => format!(", max depth {depth}"),
+        _ => String::new(),
+    }
+}
+
+/// The series of `options` in `scene`, in table order: each sampler, per
+/// draw layout where the run labels them.
+fn series_for(options: &Options, scene: SceneKind) -> Vec<(TracerSampler, Option<Draws>)> {
+    let labelled = options.labels_draws();
+    options
+        .samplers_for(scene)
+        .into_iter()
+        .flat_map(|kind| {
+            let draws = options.draws_for(scene, kind);
+            let labels: Vec<Option<Draws>> = if labelled && kind != TracerSampler::Pcg32 {
+                draws.into_iter().map(Some).collect()
+            } else {
+                vec![None]
+            };
+            labels.into_iter().map(move |d| (kind, d))
+        })
+        .collect()
 }
 
 /// The spp and seconds at which a sampler's error first reaches `target`,
@@ -104,10 +160,16 @@ pub fn markdown_tables(options: &Options, rows: &[Row]) -> String {
     let mut text = String::new();
     for (scene, width, height) in jobs(rows) {
         let frames = frames_label(options.frames_for(scene));
+        let here: Vec<&Row> = rows
+            .iter()
+            .filter(|r| (r.scene, r.width, r.height) == (scene, width, height))
+            .collect();
         let _ = writeln!(
             text,
-            "\n### {scene} {width}x{height}, {} filter{mode}: RMSE / blurred RMSE (ms per frame), {frames}; what reaching RMSE {} costs\n",
-            options.filters[0], options.target
+            "\n### {scene} {width}x{height}, {} filter{mode}{}: RMSE / blurred RMSE (ms per frame), {frames}; what reaching RMSE {} costs\n",
+            options.filters[0],
+            depth_note(&here),
+            options.target
         );
         let spps = options.spps_for(scene);
         let mut header = String::from("| sampler |");
@@ -119,12 +181,13 @@ pub fn markdown_tables(options: &Options, rows: &[Row]) -> String {
         header.push_str(" spp to reach | time to reach |");
         rule.push_str(" ---: | ---: |");
         let _ = writeln!(text, "{header}\n{rule}");
-        for kind in options.samplers_for(scene) {
-            let mine: Vec<&Row> = rows
+        for (kind, draws) in series_for(options, scene) {
+            let mine: Vec<&Row> = here
                 .iter()
-                .filter(|r| (r.scene, r.width, r.height, r.sampler) == (scene, width, height, kind))
+                .copied()
+                .filter(|r| (r.sampler, r.draws) == (kind, draws))
                 .collect();
-            let mut line = format!("| {kind} |");
+            let mut line = format!("| {} |", series_label(kind, draws));
             for spp in &spps {
                 match mine.iter().find(|r| r.spp == *spp) {
                     Some(r) => {
@@ -153,6 +216,7 @@ pub fn markdown_tables(options: &Options, rows: &[Row]) -> String {
         versus_random(rows),
         zsobol_versus_sobol(rows),
         joint_versus_pairs(rows),
+        call_order_versus_keyed(rows),
         versus_pcg32(rows),
     ];
     for section in sections.into_iter().flatten() {
@@ -170,6 +234,8 @@ struct Ratios {
     rmse: f64,
     time: f64,
     efficiency: f64,
+    /// The RMSE ratio off the light ([`Row::off_light_rmse`]).
+    off_light: f64,
 }
 
 impl Ratios {
@@ -177,10 +243,18 @@ impl Ratios {
         let rmse = row.rmse / baseline.rmse;
         let time = row.seconds / baseline.seconds;
         Self {
+            off_light: row.off_light_rmse / baseline.off_light_rmse,
             rmse,
             time,
             efficiency: rmse * rmse * time,
         }
+    }
+}
+
+impl Ratios {
+    /// RMSE^2 x time off the light.
+    fn off_light_efficiency(&self) -> f64 {
+        self.off_light * self.off_light * self.time
     }
 }
 
@@ -197,19 +271,22 @@ fn versus_pcg32(rows: &[Row]) -> Option<String> {
             .iter()
             .filter(|r| (r.scene, r.width, r.height) == (scene, width, height))
             .collect();
-        let mut samplers: Vec<TracerSampler> = Vec::new();
+        let mut samplers: Vec<(TracerSampler, Option<Draws>)> = Vec::new();
         let mut spps: Vec<u32> = Vec::new();
         for r in &here {
-            if r.sampler != TracerSampler::Pcg32 && !samplers.contains(&r.sampler) {
-                samplers.push(r.sampler);
+            let series = (r.sampler, r.draws);
+            if r.sampler != TracerSampler::Pcg32 && !samplers.contains(&series) {
+                samplers.push(series);
             }
             if !spps.contains(&r.spp) {
                 spps.push(r.spp);
             }
         }
         spps.sort_unstable();
-        let compared = |sampler: TracerSampler, spp: u32| {
-            let r = here.iter().find(|r| (r.sampler, r.spp) == (sampler, spp))?;
+        let compared = |series: (TracerSampler, Option<Draws>), spp: u32| {
+            let r = here
+                .iter()
+                .find(|r| ((r.sampler, r.draws), r.spp) == (series, spp))?;
             Some((r, Ratios::of(r, partner(rows, r, TracerSampler::Pcg32)?)))
         };
         if !samplers
@@ -218,55 +295,96 @@ fn versus_pcg32(rows: &[Row]) -> Option<String> {
         {
             continue;
         }
+        // A run labelled with draw layouts (cornell at a --max-depth, or
+        // keyed against call order) also compares the RMSE off the light.
+        let off_light = here.iter().any(|r| r.draws.is_some());
+        let (extra_header, extra_rule) = if off_light {
+            (
+                " off-light RMSE / pcg32 | off-light RMSE^2 x time / pcg32 |",
+                " ---: | ---: |",
+            )
+        } else {
+            ("", "")
+        };
         let _ = writeln!(
             text,
-            "\n#### {scene} {width}x{height}: each sampler over pcg32 (`rand_pcg::Pcg32` per pixel sample, a renderer's own random numbers), below 1 where the sampler is ahead\n\n| sampler | spp | RMSE / pcg32 | time / pcg32 | RMSE^2 x time / pcg32 |\n| --- | ---: | ---: | ---: | ---: |"
+            "\n#### {scene} {width}x{height}{}: each sampler over pcg32 (`rand_pcg::Pcg32` per pixel sample, a renderer's own random numbers), below 1 where the sampler is ahead\n\n| sampler | spp | RMSE / pcg32 | time / pcg32 | RMSE^2 x time / pcg32 |{extra_header}\n| --- | ---: | ---: | ---: | ---: |{extra_rule}",
+            depth_note(&here)
         );
-        for &sampler in &samplers {
+        for &series in &samplers {
             for &spp in &spps {
-                if let Some((_, ratios)) = compared(sampler, spp) {
-                    let _ = writeln!(
-                        text,
-                        "| {sampler} | {spp} | {:.3} | {:.3} | {:.3} |",
-                        ratios.rmse, ratios.time, ratios.efficiency
+                if let Some((r, ratios)) = compared(series, spp) {
+                    let mut line = format!(
+                        "| {} | {spp} | {:.3} | {:.3} | {:.3} |",
+                        r.label(),
+                        ratios.rmse,
+                        ratios.time,
+                        ratios.efficiency
                     );
+                    if off_light {
+                        let _ = write!(
+                            line,
+                            " {:.3} | {:.3} |",
+                            ratios.off_light,
+                            ratios.off_light_efficiency()
+                        );
+                    }
+                    let _ = writeln!(text, "{line}");
                 }
             }
         }
-        let verdicts: Vec<String> = spps
-            .iter()
-            .filter_map(|&spp| {
-                let mut ranked: Vec<(TracerSampler, Ratios)> = samplers
-                    .iter()
-                    .filter_map(|&s| Some((s, compared(s, spp)?.1)))
-                    .collect();
-                ranked.sort_by(|a, b| a.1.efficiency.total_cmp(&b.1.efficiency));
-                let &(best, ratios) = ranked.first()?;
-                let e = ratios.efficiency;
-                Some(if e < 1.0 {
-                    let runner_up = ranked.get(1).map_or(String::new(), |(s, r)| {
-                        format!(", ahead of `{s}` ({:.3})", r.efficiency)
-                    });
-                    format!(
-                        "at {spp} spp `{best}` wins, {e:.3} of pcg32's RMSE^2 x time \
-                         (pcg32 takes {:.2}x as long to the same error){runner_up}",
-                        1.0 / e
-                    )
-                } else {
-                    format!(
-                        "at {spp} spp pcg32 wins: the best of the others, `{best}`, \
-                         has {e:.3}x its RMSE^2 x time"
-                    )
+        let verdicts = |efficiency: fn(&Ratios) -> f64| -> Vec<String> {
+            spps.iter()
+                .filter_map(|&spp| {
+                    let ranked: Vec<(String, f64)> = samplers
+                        .iter()
+                        .filter_map(|&s| {
+                            let (r, ratios) = compared(s, spp)?;
+                            Some((r.label(), efficiency(&ratios)))
+                        })
+                        .collect();
+                    verdict(spp, ranked)
                 })
-            })
-            .collect();
+                .collect()
+        };
         let _ = writeln!(
             text,
-            "\nPer unit of time (RMSE^2 x time, lower is better) on {scene} {width}x{height}: {}.",
-            verdicts.join("; ")
+            "\nPer unit of time (RMSE^2 x time, lower is better) on {scene} {width}x{height}{}: {}.",
+            depth_note(&here),
+            verdicts(|r| r.efficiency).join("; ")
         );
+        if off_light {
+            let _ = writeln!(
+                text,
+                "\nOff the light (RMSE^2 x time over the pixels more than {LIGHT_MARGIN} pixels from any whose reference passes {TOP_BRIGHTEST}): {}.",
+                verdicts(Ratios::off_light_efficiency).join("; ")
+            );
+        }
     }
     (!text.is_empty()).then_some(text)
+}
+
+/// Which series wins at `spp` by `ranked`'s efficiency (RMSE^2 x time
+/// over pcg32's), by how much, and the runner-up; `None` when nothing was
+/// compared.
+fn verdict(spp: u32, mut ranked: Vec<(String, f64)>) -> Option<String> {
+    ranked.sort_by(|a, b| a.1.total_cmp(&b.1));
+    let (best, e) = ranked.first()?;
+    Some(if *e < 1.0 {
+        let runner_up = ranked
+            .get(1)
+            .map_or(String::new(), |(s, e)| format!(", ahead of `{s}` ({e:.3})"));
+        format!(
+            "at {spp} spp `{best}` wins, {e:.3} of pcg32's RMSE^2 x time \
+             (pcg32 takes {:.2}x as long to the same error){runner_up}",
+            1.0 / e
+        )
+    } else {
+        format!(
+            "at {spp} spp pcg32 wins: the best of the others, `{best}`, \
+             has {e:.3}x its RMSE^2 x time"
+        )
+    })
 }
 
 /// The run of several filters or modes: one table per scene and size,
@@ -398,11 +516,17 @@ fn jobs(rows: &[Row]) -> Vec<(SceneKind, u32, u32)> {
     jobs
 }
 
-/// The row of `sampler` matching `r`'s scene, size and count.
+/// The row of `sampler` matching `r`'s scene, size and count, and its draw
+/// layout (pcg32's, call order always, matches any).
 fn partner<'a>(rows: &'a [Row], r: &Row, sampler: TracerSampler) -> Option<&'a Row> {
+    let draws = if sampler == TracerSampler::Pcg32 {
+        None
+    } else {
+        r.draws
+    };
     rows.iter().find(|q| {
-        (q.scene, q.width, q.height, q.spp, q.sampler)
-            == (r.scene, r.width, r.height, r.spp, sampler)
+        (q.scene, q.width, q.height, q.spp, q.sampler, q.draws)
+            == (r.scene, r.width, r.height, r.spp, sampler, draws)
     })
 }
 
@@ -476,10 +600,8 @@ fn zsobol_versus_sobol(rows: &[Row]) -> Option<String> {
         };
         let _ = writeln!(
             text,
-            "| {} {}x{} | {} | {} | {:.3} | {:.3} | {low} |",
-            z.scene,
-            z.width,
-            z.height,
+            "| {} | {} | {} | {:.3} | {:.3} | {low} |",
+            scene_cell(z),
             z.spp,
             z.frames,
             z.blurred_rmse / s.blurred_rmse,
@@ -487,6 +609,47 @@ fn zsobol_versus_sobol(rows: &[Row]) -> Option<String> {
         );
     }
     text += "\n\"-\": the film is too small for an error spectrum.\n";
+    Some(text)
+}
+
+/// A ratio table's first cell: the scene and size, and the draw layout
+/// where the run labels rows with it.
+fn scene_cell(r: &Row) -> String {
+    let layout = r
+        .draws
+        .map_or(String::new(), |d| format!(" ({})", d.name()));
+    format!("{} {}x{}{layout}", r.scene, r.width, r.height)
+}
+
+/// A ratio table: `heading`, then a line per pair of rows, the scene and
+/// size (and the first row's layout, where `layout` says), then
+/// `columns` filled by `cells`. `None` when there is no pair.
+fn pair_table(
+    heading: &str,
+    columns: &[&str],
+    (pairs, layout): (&[(&Row, &Row)], bool),
+    cells: impl Fn(&Row, &Row) -> String,
+) -> Option<String> {
+    if pairs.is_empty() {
+        return None;
+    }
+    let rule: Vec<&str> = columns
+        .iter()
+        .map(|c| if *c == "sampler" { "---" } else { "---:" })
+        .collect();
+    let mut text = format!(
+        "#### {heading}\n\n| scene | {} |\n| --- | {} |\n",
+        columns.join(" | "),
+        rule.join(" | ")
+    );
+    for (a, b) in pairs {
+        let scene = if layout {
+            scene_cell(a)
+        } else {
+            format!("{} {}x{}", a.scene, a.width, a.height)
+        };
+        let _ = writeln!(text, "| {scene} | {} |", cells(a, b));
+    }
     Some(text)
 }
 
@@ -499,27 +662,65 @@ fn joint_versus_pairs(rows: &[Row]) -> Option<String> {
         .filter(|r| r.sampler == SOBOL)
         .filter_map(|r| Some((r, partner(rows, r, TracerSampler::SobolPairs)?)))
         .collect();
-    if pairs.is_empty() {
-        return None;
-    }
-    let mut text = String::from(
-        "#### Film and lens: one 4D draw (sobol) / two pairs (sobol-pairs)\n\n| scene | spp | frames | RMSE ratio | blurred RMSE ratio | time ratio |\n| --- | ---: | ---: | ---: | ---: | ---: |\n",
-    );
-    for (joint, paired) in pairs {
-        let _ = writeln!(
-            text,
-            "| {} {}x{} | {} | {} | {:.3} | {:.3} | {:.2} |",
-            joint.scene,
-            joint.width,
-            joint.height,
-            joint.spp,
-            joint.frames,
-            joint.rmse / paired.rmse,
-            joint.blurred_rmse / paired.blurred_rmse,
-            joint.seconds / paired.seconds,
-        );
-    }
-    Some(text)
+    pair_table(
+        "Film and lens: one 4D draw (sobol) / two pairs (sobol-pairs)",
+        &[
+            "spp",
+            "frames",
+            "RMSE ratio",
+            "blurred RMSE ratio",
+            "time ratio",
+        ],
+        (&pairs, true),
+        |joint, paired| {
+            format!(
+                "{} | {} | {:.3} | {:.3} | {:.2}",
+                joint.spp,
+                joint.frames,
+                joint.rmse / paired.rmse,
+                joint.blurred_rmse / paired.blurred_rmse,
+                joint.seconds / paired.seconds,
+            )
+        },
+    )
+}
+
+/// Each sampler's call-order rows over its keyed ones (cornell, `--draws
+/// keyed,call-order`): RMSE, RMSE off the light and time ratios, below 1
+/// where call order is ahead. `None` unless both layouts were rendered.
+fn call_order_versus_keyed(rows: &[Row]) -> Option<String> {
+    let pairs: Vec<(&Row, &Row)> = rows
+        .iter()
+        .filter(|r| r.draws == Some(Draws::CallOrder))
+        .filter_map(|r| {
+            let keyed = Row {
+                draws: Some(Draws::Keyed),
+                ..r.clone()
+            };
+            Some((r, partner(rows, &keyed, r.sampler)?))
+        })
+        .collect();
+    pair_table(
+        "Call order / keyed draws, per sampler and count (below 1: call order ahead)",
+        &[
+            "sampler",
+            "spp",
+            "RMSE ratio",
+            "off-light RMSE ratio",
+            "time ratio",
+        ],
+        (&pairs, false),
+        |call_order, keyed| {
+            format!(
+                "{} | {} | {:.3} | {:.3} | {:.2}",
+                keyed.sampler,
+                keyed.spp,
+                call_order.rmse / keyed.rmse,
+                call_order.off_light_rmse / keyed.off_light_rmse,
+                call_order.seconds / keyed.seconds,
+            )
+        },
+    )
 }
 
 /// The run of several light samplings (cornell only): one table per size,
@@ -612,16 +813,19 @@ pub fn json_report(rows: &[Row]) -> String {
         .iter()
         .map(|r| {
             format!(
-                r#"  {{"scene": "{}", "filter": "{}", "filter_mode": "{}", "light": {}, "sampler": "{}", "spp": {}, "rmse": {:e}, "blurred_rmse": {:e}, "top_rmse": {:e}, "low_frequency_power": {}, "seconds": {:e}, "frames": {}, "width": {}, "height": {}}}"#,
+                r#"  {{"scene": "{}", "filter": "{}", "filter_mode": "{}", "light": {}, "draws": {}, "max_depth": {}, "sampler": "{}", "spp": {}, "rmse": {:e}, "blurred_rmse": {:e}, "top_rmse": {:e}, "off_light_rmse": {:e}, "low_frequency_power": {}, "seconds": {:e}, "frames": {}, "width": {}, "height": {}}}"#,
                 r.scene,
                 r.filter,
                 r.mode,
                 r.light.map_or("null".to_owned(), |l| format!("\"{l}\"")),
+                r.draws.map_or("null".to_owned(), |d| format!("\"{d}\"")),
+                r.max_depth.map_or("null".to_owned(), |d| d.to_string()),
                 r.sampler.name(),
                 r.spp,
                 r.rmse,
                 r.blurred_rmse,
                 r.top_rmse,
+                r.off_light_rmse,
                 // JSON has no NaN: a film too small for a spectrum is null.
                 if r.low_power.is_finite() {
                     format!("{:e}", r.low_power)
@@ -653,11 +857,16 @@ fn docs_markers(block: &str) -> (String, String) {
 pub const DOCS_BLOCK: &str = "tracer";
 /// The block of the light sampling comparison (`--light area,solid-angle`).
 pub const LIGHT_BLOCK: &str = "tracer light";
+/// The block of a run whose rows are labelled with their draw layout
+/// (`--draws keyed,call-order`, or a `--max-depth`).
+pub const DRAWS_BLOCK: &str = "tracer draws";
 
 /// The `--docs` block a run writes.
 pub fn docs_block_name(options: &Options) -> &'static str {
     if options.lights.len() > 1 {
         LIGHT_BLOCK
+    } else if options.labels_draws() {
+        DRAWS_BLOCK
     } else {
         DOCS_BLOCK
     }
@@ -745,8 +954,11 @@ mod tests {
             mode: FilterMode::Weighted,
             reference_range: [0.0, 1.0],
             light: None,
+            draws: None,
+            max_depth: None,
             rmse,
             top_rmse: rmse,
+            off_light_rmse: rmse,
             blurred_rmse: rmse / 2.0,
             low_power: rmse * rmse,
             seconds: 0.001,
@@ -844,8 +1056,80 @@ mod tests {
             Ratios {
                 rmse: 0.5,
                 time: 2.0,
-                efficiency: 0.5
+                efficiency: 0.5,
+                off_light: 0.5,
             }
+        );
+    }
+
+    #[test]
+    fn rows_labelled_with_their_draws_are_compared_per_layout_and_with_pcg32() {
+        let labelled = |sampler, draws, spp, rmse, seconds| Row {
+            scene: SceneKind::Cornell,
+            draws,
+            max_depth: Some(1),
+            off_light_rmse: rmse / 10.0,
+            ..timed(sampler, spp, rmse, seconds)
+        };
+        let orthogonal = TracerSampler::Pixel(PixelSamplerKind::Orthogonal);
+        let (keyed, call) = (Some(Draws::Keyed), Some(Draws::CallOrder));
+        let rows = [
+            labelled(TracerSampler::Pcg32, None, 4, 0.2, 0.01),
+            labelled(orthogonal, keyed, 4, 0.1, 0.02),
+            labelled(orthogonal, call, 4, 0.05, 0.02),
+        ];
+        let table = versus_pcg32(&rows).unwrap();
+        assert!(
+            table.contains("cornell 8x8, max depth 1: each sampler"),
+            "{table}"
+        );
+        for line in [
+            "| orthogonal (keyed) | 4 | 0.500 | 2.000 | 0.500 | 0.500 | 0.500 |",
+            "| orthogonal (call order) | 4 | 0.250 | 2.000 | 0.125 | 0.250 | 0.125 |",
+        ] {
+            assert!(table.contains(&format!("\n{line}\n")), "{line}: {table}");
+        }
+        assert!(
+            table.contains("at 4 spp `orthogonal (call order)` wins, 0.125 of pcg32's"),
+            "{table}"
+        );
+        assert!(table.contains("\nOff the light ("), "{table}");
+        let ratios = call_order_versus_keyed(&rows).unwrap();
+        assert!(
+            ratios.contains("| cornell 8x8 | orthogonal | 4 | 0.500 | 0.500 | 1.00 |"),
+            "{ratios}"
+        );
+        // Unlabelled rows: neither the layout table nor the off-light columns.
+        assert_eq!(call_order_versus_keyed(&[row(SOBOL, 4, 0.1)]), None);
+        let plain = versus_pcg32(&[
+            timed(TracerSampler::Pcg32, 4, 0.2, 0.01),
+            timed(SOBOL, 4, 0.1, 0.01),
+        ]);
+        assert!(!plain.unwrap().contains("off-light"));
+        // The run's tables and docs block.
+        let options = crate::cli::tests::run_options(&[
+            "--scene",
+            "cornell",
+            "--max-depth",
+            "1",
+            "--draws",
+            "keyed,call-order",
+            "--sampler",
+            "orthogonal,pcg32",
+            "--spp",
+            "4",
+        ]);
+        assert_eq!(docs_block_name(&options), DRAWS_BLOCK);
+        let rows = rows.map(|r| Row { width: 8, ..r });
+        let tables = markdown_tables(&options, &rows);
+        assert!(
+            tables.contains("| orthogonal (call order) | 0.05000 /"),
+            "{tables}"
+        );
+        assert!(tables.contains("| pcg32 | 0.20000 /"), "{tables}");
+        assert_eq!(
+            docs_block_name(&crate::cli::tests::run_options(&["--full"])),
+            DOCS_BLOCK
         );
     }
 

@@ -22,9 +22,18 @@
 //! | where | draws |
 //! | --- | --- |
 //! | the sample's root domain | [`film_lens`](PathSamples::film_lens): film offset `xy` and lens point `zw` in one 4D draw |
-//! | bounce `b`: `root.branch(BOUNCE).branch(b)` | light choice (1D), light sample (2D: a direction in the light's solid angle, or a point on it), BSDF (2D), roulette (1D), in this order, at every bounce |
+//! | bounce `b`: `root.branch(BOUNCE).branch(b)`, one branch per purpose ([`Draws::Keyed`], the default) | light choice (1D, key [`LIGHT_CHOICE`]), light sample (2D, [`LIGHT_SAMPLE`]: a direction in the light's solid angle, or a point on it), BSDF (2D, [`BSDF`]), roulette (1D, [`ROULETTE`]), at every bounce |
 //!
-//! so the numbers of bounce `b` never depend on what earlier bounces did.
+//! so the numbers of bounce `b` never depend on what earlier bounces did,
+//! nor one purpose's on another's. [`Draws::CallOrder`] draws the same
+//! numbers, in the same order, as successive draws of the root domain
+//! instead (film and lens, then bounce 0's four, bounce 1's, ...): what
+//! `pcg32` always does, and for a sampler whose successive draws take
+//! consecutive dimensions of one set (`orthogonal`, `latin-hypercube`)
+//! it stratifies film, lens and the first bounce's draws jointly.
+//! `--max-depth N` ([`Tracing::max_depth`]) stops paths after bounce
+//! `N - 1`: 1 is direct light only (emission seen by the camera ray and
+//! next-event estimation at its hit).
 //! Three implementations feed it: [`Pairs`], over any
 //! [`PixelSampler`]'s `sample_pixel` (film and lens are two independent
 //! pairs, each branch a hashed dimension), the library's `Domain`
@@ -51,6 +60,118 @@ use crate::scenes::Rgb;
 /// The key of the per-bounce branch: bounce `b` draws from
 /// `root.branch(BOUNCE).branch(b)`.
 pub const BOUNCE: u32 = 0x426f_756e; // "Boun"
+
+/// The keys of a bounce's draws under [`Draws::Keyed`]: each purpose's
+/// number is the first draw of `root.branch(BOUNCE).branch(b).branch(key)`.
+pub const LIGHT_CHOICE: u32 = 0x4c43_686f; // "LCho"
+/// See [`LIGHT_CHOICE`].
+pub const LIGHT_SAMPLE: u32 = 0x4c69_6768; // "Ligh"
+/// See [`LIGHT_CHOICE`].
+pub const BSDF: u32 = 0x4273_6466; // "Bsdf"
+/// See [`LIGHT_CHOICE`].
+pub const ROULETTE: u32 = 0x526f_756c; // "Roul"
+
+/// How a path takes its numbers from its sample's domains.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Draws {
+    /// One branch key per purpose and bounce (see the module docs): no
+    /// draw depends on how many others the path made.
+    #[default]
+    Keyed,
+    /// Every number a successive draw of the root domain, in call order:
+    /// film and lens, then each bounce's light choice, light sample, BSDF
+    /// and roulette.
+    CallOrder,
+}
+
+impl Draws {
+    pub const ALL: [Draws; 2] = [Draws::Keyed, Draws::CallOrder];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Draws::Keyed => "keyed",
+            Draws::CallOrder => "call-order",
+        }
+    }
+}
+
+impl core::fmt::Display for Draws {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl core::str::FromStr for Draws {
+    type Err = String;
+
+    fn from_str(text: &str) -> Result<Self, String> {
+        crate::shared::by_name(&Draws::ALL, text, Draws::name, "draw layout")
+    }
+}
+
+/// How paths are traced: the light sampling, the draw layout and the
+/// depth. A [`Light`] alone is the default layout and depth.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Tracing {
+    pub light: Light,
+    pub draws: Draws,
+    /// Bounces a path makes at most (bounce 0 is the camera ray's hit):
+    /// [`MAX_BOUNCES`] by default, 1 for direct light only.
+    pub max_depth: u32,
+}
+
+impl From<Light> for Tracing {
+    fn from(light: Light) -> Self {
+        Self {
+            light,
+            draws: Draws::Keyed,
+            max_depth: MAX_BOUNCES,
+        }
+    }
+}
+
+/// One bounce's numbers.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct BounceDraws {
+    light_choice: f32,
+    light_sample: Vec2,
+    bsdf: Vec2,
+    roulette: f32,
+}
+
+impl BounceDraws {
+    /// Four successive draws of `domain`.
+    fn next<S: PathSamples>(domain: &mut S) -> Self {
+        let light_choice = domain.next_1d();
+        let light_sample = domain.next_2d();
+        let bsdf = domain.next_2d();
+        let roulette = domain.next_1d();
+        Self {
+            light_choice,
+            light_sample,
+            bsdf,
+            roulette,
+        }
+    }
+
+    /// Each number the first draw of its own branch of `domain` (a
+    /// sequential generator's branches rejoin it, so it still draws in
+    /// call order).
+    fn keyed<S: PathSamples>(domain: &mut S) -> Self {
+        fn first<S: PathSamples, T>(domain: &mut S, key: u32, draw: fn(&mut S) -> T) -> T {
+            let mut child = domain.branch(key);
+            let value = draw(&mut child);
+            domain.rejoin(child);
+            value
+        }
+        Self {
+            light_choice: first(domain, LIGHT_CHOICE, S::next_1d),
+            light_sample: first(domain, LIGHT_SAMPLE, S::next_2d),
+            bsdf: first(domain, BSDF, S::next_2d),
+            roulette: first(domain, ROULETTE, S::next_1d),
+        }
+    }
+}
 
 /// Paths stop after this many bounces even if the roulette has not ended
 /// them. Only paths that stay on glass get this far (a diffuse bounce
@@ -347,9 +468,16 @@ struct PathResult {
     rays: u32,
 }
 
-/// Radiance along `ray`, drawing every number from `root`'s bounce
-/// branches (see the module docs for the layout).
-fn trace<S: PathSamples>(scene: &Scene, light: Light, mut ray: Ray, root: &S) -> PathResult {
+/// Radiance along `ray`, drawing every number from `root` as
+/// `tracing.draws` says (see the module docs for the layout), for at most
+/// `tracing.max_depth` bounces.
+fn trace<S: PathSamples>(
+    scene: &Scene,
+    tracing: Tracing,
+    mut ray: Ray,
+    root: &mut S,
+) -> PathResult {
+    let light = tracing.light;
     let mut bounces = root.branch(BOUNCE);
     let mut throughput = Vec3::ONE;
     let mut radiance = Vec3::ZERO;
@@ -357,13 +485,21 @@ fn trace<S: PathSamples>(scene: &Scene, light: Light, mut ray: Ray, root: &S) ->
     // Emission found by the next ray counts: true after the camera and
     // after glass, false after a diffuse vertex (whose light came by NEE).
     let mut count_emission = true;
-    for bounce in 0..MAX_BOUNCES {
-        let mut domain = bounces.branch(bounce);
-        let light_choice = domain.next_1d();
-        let light_sample = domain.next_2d();
-        let bsdf = domain.next_2d();
-        let roulette = domain.next_1d();
-        bounces.rejoin(domain);
+    for bounce in 0..tracing.max_depth {
+        let BounceDraws {
+            light_choice,
+            light_sample,
+            bsdf,
+            roulette,
+        } = match tracing.draws {
+            Draws::Keyed => {
+                let mut domain = bounces.branch(bounce);
+                let draws = BounceDraws::keyed(&mut domain);
+                bounces.rejoin(domain);
+                draws
+            }
+            Draws::CallOrder => BounceDraws::next(root),
+        };
 
         rays += 1;
         let Some(hit) = scene.intersect(&ray, f32::INFINITY) else {
@@ -448,7 +584,7 @@ fn trace<S: PathSamples>(scene: &Scene, light: Light, mut ray: Ray, root: &S) ->
 /// The mean over samples `0..spp` of pixel `(px, py)`, and the rays cast.
 fn pixel<S: SampleSource>(
     scene: &Scene,
-    light: Light,
+    tracing: Tracing,
     camera: &Camera,
     source: &S,
     spp: u32,
@@ -461,7 +597,7 @@ fn pixel<S: SampleSource>(
         let film_lens = root.film_lens();
         let film = Vec2::new(px as f32 + film_lens.x, py as f32 + film_lens.y);
         let ray = camera.ray(film, Vec2::new(film_lens.z, film_lens.w));
-        let path = trace(scene, light, ray, &root);
+        let path = trace(scene, tracing, ray, &mut root);
         rays += u64::from(path.rays);
         for (s, v) in sum.iter_mut().zip(path.radiance.to_array()) {
             *s += f64::from(v);
@@ -473,8 +609,9 @@ fn pixel<S: SampleSource>(
 
 /// The Cornell box on a `width x height` film (row-major, row 0 at the top)
 /// with samples `0..spp` of each pixel from `source`, box-filtered, the
-/// light sampled as `light` says: each pixel is the mean radiance of its
-/// own samples, in linear RGB.
+/// paths traced as `tracing` says (a [`Light`] alone: the default layout
+/// and depth): each pixel is the mean radiance of its own samples, in
+/// linear RGB.
 ///
 /// Bit-identical for any thread count: rows run on the current rayon pool,
 /// each pixel a fixed sequence of f64 additions. `spp = 0` gives a black
@@ -484,9 +621,9 @@ pub fn render_cornell<S: SampleSource>(
     height: u32,
     spp: u32,
     source: &S,
-    light: Light,
+    tracing: impl Into<Tracing>,
 ) -> Vec<Rgb> {
-    render_counting(width, height, spp, source, light).0
+    render_counting(width, height, spp, source, tracing).0
 }
 
 /// [`render_cornell`], and the mean number of rays cast per sample: the
@@ -496,8 +633,9 @@ pub fn render_counting<S: SampleSource>(
     height: u32,
     spp: u32,
     source: &S,
-    light: Light,
+    tracing: impl Into<Tracing>,
 ) -> (Vec<Rgb>, f64) {
+    let tracing = tracing.into();
     let scene = Scene::cornell();
     let camera = Camera::new(width, height);
     let mut pixels = vec![([0.0f32; 3], 0u64); width as usize * height as usize];
@@ -507,7 +645,7 @@ pub fn render_counting<S: SampleSource>(
             .enumerate()
             .for_each(|(py, row)| {
                 for (value, px) in row.iter_mut().zip(0..width) {
-                    *value = pixel(&scene, light, &camera, source, spp, [px, py as u32]);
+                    *value = pixel(&scene, tracing, &camera, source, spp, [px, py as u32]);
                 }
             });
     }
@@ -743,6 +881,76 @@ mod tests {
         let shared = e.next_2d();
         assert_eq!((x, y), (shared.x, shared.y));
         assert_eq!(pair, e.next_2d());
+    }
+
+    /// Samples that count the draws of a path (every branch shares the
+    /// count) and return mid-range values.
+    #[derive(Clone)]
+    struct Counting(std::rc::Rc<std::cell::Cell<u32>>);
+
+    impl PathSamples for Counting {
+        fn next_1d(&mut self) -> f32 {
+            self.0.set(self.0.get() + 1);
+            0.3
+        }
+        fn next_2d(&mut self) -> Vec2 {
+            Vec2::new(self.next_1d(), 0.6)
+        }
+        fn film_lens(&mut self) -> Vec4 {
+            self.0.set(self.0.get() + 1);
+            Vec4::splat(0.5)
+        }
+        fn branch(&self, _key: u32) -> Self {
+            self.clone()
+        }
+    }
+
+    /// `--max-depth 1` is direct light: a path makes one bounce's four
+    /// draws (light choice, light sample, BSDF, roulette) under either
+    /// layout, where the full depth goes on bouncing; and with keyed draws
+    /// a depth-1 pixel is the first term of the full-depth pixel's sum,
+    /// so no pixel of it is brighter and the indirect light is missing.
+    #[test]
+    fn depth_one_paths_make_one_bounce_of_draws() {
+        let scene = Scene::cornell();
+        let camera = Camera::new(16, 16);
+        for draws in Draws::ALL {
+            let count = |max_depth: u32, film: Vec2| {
+                let mut root = Counting(Default::default());
+                let tracing = Tracing {
+                    light: Light::SolidAngle,
+                    draws,
+                    max_depth,
+                };
+                let ray = camera.ray(film, Vec2::splat(0.5));
+                let path = trace(&scene, tracing, ray, &mut root);
+                (root.0.get(), path.rays)
+            };
+            // The white floor (bottom centre) and the back wall.
+            for film in [Vec2::new(8.0, 15.0), Vec2::new(4.0, 8.0)] {
+                let (drawn, rays) = count(1, film);
+                assert_eq!(drawn, 4, "{draws} {film}");
+                // The camera ray and at most one shadow ray.
+                assert!(rays <= 2, "{draws} {film}: {rays}");
+                assert!(count(MAX_BOUNCES, film).0 > 4, "{draws} {film}");
+            }
+        }
+        let (width, height, spp) = (16, 16, 4);
+        let sampler = Padded::new(Sobol::new(spp).unwrap(), 0);
+        let direct = Tracing {
+            max_depth: 1,
+            ..Tracing::from(Light::SolidAngle)
+        };
+        let one = render_cornell(width, height, spp, &Pairs(&sampler), direct);
+        let full = render_cornell(width, height, spp, &Pairs(&sampler), Light::SolidAngle);
+        assert!(
+            one.iter()
+                .flatten()
+                .zip(full.iter().flatten())
+                .all(|(a, b)| a <= b)
+        );
+        let sum = |image: &[Rgb]| image.iter().map(|&p| f64::from(luminance(p))).sum::<f64>();
+        assert!(sum(&one) < 0.9 * sum(&full), "{} {}", sum(&one), sum(&full));
     }
 
     #[test]
