@@ -537,7 +537,7 @@ impl<'a> SceneJob<'a> {
         let mut first: Option<(Image, f64, f64)> = None;
         let frames = options.frames_for(self.kind);
         for (offset, frame) in options.frame_range(self.kind).enumerate() {
-            let frame_sampler = match sampler.frame(spp, width, height, frame) {
+            let frame_sampler = match FrameSampler::new(sampler, spp, (width, height), frame) {
                 Ok(frame_sampler) => frame_sampler,
                 Err(e) => {
                     let label = &self.label;

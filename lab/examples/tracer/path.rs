@@ -32,7 +32,7 @@ use wellspread::glam::{Vec2, Vec4};
 use wellspread::{AnyPixelSampler, Domain, PixelSampler, PixelSamplerKind, SamplerKind};
 
 use crate::cornell::{Light, PathSamples, SampleSource, Tracing, render_cornell};
-use crate::render::{FilmLens, Image};
+use crate::render::{FilmLens, Image, TracerSampler};
 
 /// A [`SampleSource`] over a pixel sampler's domains.
 #[derive(Clone, Copy, Debug)]
@@ -102,6 +102,25 @@ impl<P: PixelSampler + Copy> PathSamples for DomainSamples<P> {
 pub enum FrameSampler {
     Pixel(AnyPixelSampler),
     Pcg32(Pcg32Source),
+}
+
+impl FrameSampler {
+    /// What frame `frame` of `sampler` renders with at `spp` samples per
+    /// pixel on a `width x height` film: the library pixel sampler, or
+    /// `pcg32`'s generators for that frame (any count).
+    pub fn new(
+        sampler: TracerSampler,
+        spp: u32,
+        (width, height): (u32, u32),
+        frame: u32,
+    ) -> Result<Self, wellspread::Error> {
+        match sampler.pixel_kind() {
+            Some(kind) => kind
+                .build(spp, [width, height], frame)
+                .map(FrameSampler::Pixel),
+            None => Ok(FrameSampler::Pcg32(Pcg32Source { frame })),
+        }
+    }
 }
 
 /// The baseline that is not the crate, as a renderer's own random-number
@@ -293,7 +312,7 @@ mod tests {
         // Every sampler, pcg32 included, under both layouts, at full depth
         // and direct light only.
         for sampler in TracerSampler::all() {
-            let frame = sampler.frame(4, width, height, 3).unwrap();
+            let frame = FrameSampler::new(sampler, 4, (width, height), 3).unwrap();
             for max_depth in [MAX_BOUNCES, 1] {
                 let images = Draws::ALL.map(|draws| {
                     let tracing = Tracing {

@@ -13,7 +13,6 @@ use rayon::prelude::*;
 use wellspread::filter::{AnyFilter, Filter, FilterKind, LanczosFilter, TentFilter};
 use wellspread::{PixelSampler, PixelSamplerKind, SamplerKind};
 
-use crate::path::{FrameSampler, Pcg32Source};
 use crate::scenes::{Built, Rgb, Scene, SceneKind};
 
 /// A linear-RGB image, row-major, row 0 at the top.
@@ -160,7 +159,7 @@ pub enum TracerSampler {
     /// Not the crate: what a renderer's own random-number path does, one
     /// `rand_pcg::Pcg32` per pixel sample and frame, seeded by hashing
     /// them, every number of the path drawn from it in call order
-    /// ([`Pcg32Source`]). The yardstick of the ratio table; the
+    /// (`path::Pcg32Source`). The yardstick of the ratio table; the
     /// path-traced scene only (the 2D scenes take their film positions
     /// from a [`PixelSampler`]).
     Pcg32,
@@ -216,25 +215,7 @@ impl TracerSampler {
         }
     }
 
-    /// What frame `frame` renders with at `spp` samples per pixel on a
-    /// `width x height` film: the library pixel sampler, or `pcg32`'s
-    /// generators for that frame (any count).
-    pub fn frame(
-        self,
-        spp: u32,
-        width: u32,
-        height: u32,
-        frame: u32,
-    ) -> Result<FrameSampler, wellspread::Error> {
-        match self.pixel_kind() {
-            Some(kind) => kind
-                .build(spp, [width, height], frame)
-                .map(FrameSampler::Pixel),
-            None => Ok(FrameSampler::Pcg32(Pcg32Source { frame })),
-        }
-    }
-
-    /// The library pixel sampler of [`frame`](Self::frame), for the tests
+    /// The library pixel sampler of [`FrameSampler::new`](crate::path::FrameSampler::new), for the tests
     /// that render a library sampler only. Panics for `pcg32`.
     #[cfg(test)]
     pub fn build(
