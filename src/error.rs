@@ -239,76 +239,12 @@ pub enum Error {
     },
 }
 
-/// A short copy of text a caller passed in (a sampler or filter name),
-/// so that [`Error`] stays `Copy` and needs no allocator: the first
-/// [`CAPACITY`](Self::CAPACITY) bytes, cut at a character boundary.
-#[derive(Clone, Copy, PartialEq, Eq, Hash)]
-pub(crate) struct InputText {
-    bytes: [u8; InputText::CAPACITY],
-    len: u8,
-    truncated: bool,
-}
-
-impl InputText {
-    /// Bytes kept: longer than every sampler name, short enough that an
-    /// `Error` stays a few words.
-    pub(crate) const CAPACITY: usize = 40;
-
-    /// The first [`CAPACITY`](Self::CAPACITY) bytes of `text`, cut back to
-    /// a character boundary.
-    #[must_use]
-    pub(crate) fn new(text: &str) -> Self {
-        let mut len = text.len().min(Self::CAPACITY);
-        while !text.is_char_boundary(len) {
-            len -= 1;
-        }
-        let mut bytes = [0; Self::CAPACITY];
-        bytes[..len].copy_from_slice(&text.as_bytes()[..len]);
-        Self {
-            bytes,
-            // len <= CAPACITY < 256.
-            len: len as u8,
-            truncated: len < text.len(),
-        }
-    }
-
-    /// The text kept.
-    #[must_use]
-    pub(crate) fn as_str(&self) -> &str {
-        // `new` cut at a character boundary, so this never fails.
-        core::str::from_utf8(&self.bytes[..usize::from(self.len)]).unwrap_or("")
-    }
-
-    /// `true` if the original text was longer than what is kept.
-    #[must_use]
-    pub(crate) const fn is_truncated(&self) -> bool {
-        self.truncated
-    }
-}
-
-impl fmt::Debug for InputText {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        fmt::Debug::fmt(self.as_str(), f)?;
-        if self.truncated {
-            f.write_str("...")?;
-        }
-        Ok(())
-    }
-}
-
-impl fmt::Display for InputText {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.as_str())?;
-        if self.truncated {
-            f.write_str("...")?;
-        }
-        Ok(())
-    }
-}
-
 /// A name a parser did not know ([`Error::UnknownSampler`],
-/// [`Error::UnknownPixelSampler`], [`Error::UnknownFilter`]): the text given and the names that
-/// parser accepts, which the message lists, each once.
+/// [`Error::UnknownPixelSampler`], [`Error::UnknownFilter`]): the text
+/// given and the names that parser accepts, which the message lists, each
+/// once. The text is kept as its first [`CAPACITY`](Self::CAPACITY)
+/// bytes, cut at a character boundary, so that [`Error`] stays `Copy` and
+/// needs no allocator.
 ///
 /// ```
 /// use wellspread::{Error, SamplerKind};
@@ -319,44 +255,72 @@ impl fmt::Display for InputText {
 /// assert!(!unknown.is_truncated());
 /// assert!(unknown.names().any(|name| name == "jittered"));
 /// ```
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, PartialEq, Eq, Hash)]
 pub struct UnknownName {
-    input: InputText,
+    bytes: [u8; UnknownName::CAPACITY],
+    len: u8,
+    truncated: bool,
     names: &'static [&'static str],
     aliases: &'static [&'static str],
 }
 
 impl UnknownName {
-    /// `input` (its first 40 bytes, cut at a character boundary) against
-    /// the parser's `names` and `aliases`.
+    /// Bytes of the text kept: longer than every name, short enough that
+    /// an `Error` stays a few words.
+    pub const CAPACITY: usize = 40;
+
+    /// `input` (its first [`CAPACITY`](Self::CAPACITY) bytes, cut back to
+    /// a character boundary) against the parser's `names` and `aliases`.
     pub(crate) fn new(
         input: &str,
         names: &'static [&'static str],
         aliases: &'static [&'static str],
     ) -> Self {
+        let mut len = input.len().min(Self::CAPACITY);
+        while !input.is_char_boundary(len) {
+            len -= 1;
+        }
+        let mut bytes = [0; Self::CAPACITY];
+        bytes[..len].copy_from_slice(&input.as_bytes()[..len]);
         Self {
-            input: InputText::new(input),
+            bytes,
+            // len <= CAPACITY < 256.
+            len: len as u8,
+            truncated: len < input.len(),
             names,
             aliases,
         }
     }
 
-    /// The text given: its first 40 bytes, cut back to a character
-    /// boundary.
+    /// The text given: its first [`CAPACITY`](Self::CAPACITY) bytes, cut
+    /// back to a character boundary.
     #[must_use]
     pub fn as_str(&self) -> &str {
-        self.input.as_str()
+        // `new` cut at a character boundary, so this never fails.
+        core::str::from_utf8(&self.bytes[..usize::from(self.len)]).unwrap_or("")
     }
 
     /// `true` if the text given was longer than [`as_str`](Self::as_str).
     #[must_use]
     pub const fn is_truncated(&self) -> bool {
-        self.input.is_truncated()
+        self.truncated
     }
 
     /// The names the parser accepts, aliases last.
     pub fn names(&self) -> impl Iterator<Item = &'static str> + Clone {
         self.names.iter().chain(self.aliases).copied()
+    }
+}
+
+/// The text given (not its buffer), whether it was cut, and the names.
+impl fmt::Debug for UnknownName {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("UnknownName")
+            .field("input", &self.as_str())
+            .field("truncated", &self.truncated)
+            .field("names", &self.names)
+            .field("aliases", &self.aliases)
+            .finish()
     }
 }
 
