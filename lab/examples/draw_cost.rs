@@ -9,7 +9,9 @@
 //! summed, so that no coordinate's work is optimised away), `start` alone (`none`) or
 //! the bench's nine-draw path (`path`) for 2^16 scattered pixel samples of
 //! a back end (any `PixelSamplerKind` name, or `unit` for the bench's PCG
-//! unit: one unit, or nine for `path`). The domain borrows the sampler
+//! unit: one unit, or nine for `path`; `joint-sobol` and `joint-sobol-4d`
+//! are the candidates of `docs/joint_study.md`, static only). `path-call`
+//! makes the same nine draws in call order from the start domain. The domain borrows the sampler
 //! (`PixelSampler::start`, 32 bytes): the concrete type (through
 //! `AnyPixelSampler::visit`), or `AnyPixelSampler` itself when the
 //! workload ends in `-any`; `-any-owned` runs the owned
@@ -27,6 +29,11 @@ use wellspread::{AnyPixelSampler, Domain, PixelSampler, PixelSamplerKind, PixelS
 
 #[path = "shared/cli.rs"]
 pub mod shared;
+
+#[path = "shared/joint_sobol.rs"]
+mod joint_sobol;
+
+use joint_sobol::{JointSobol, MAX_BLOCK};
 
 use shared::Failure;
 
@@ -60,6 +67,8 @@ pub enum Through {
 pub enum BackEnd {
     Unit,
     Sampler(PixelSamplerKind),
+    /// A study candidate: `block` Sobol' dimensions per copy.
+    JointSobol(u32),
 }
 
 /// The work per pixel sample.
@@ -73,6 +82,8 @@ pub enum Workload {
     FourD,
     /// `start` and the bench's nine keyed draws.
     Path,
+    /// `start` and the same nine draws in call order.
+    PathCall,
     /// `start` alone.
     None,
     /// The inputs alone, the count to subtract.
@@ -80,8 +91,11 @@ pub enum Workload {
 }
 
 fn back_end(text: &str) -> Result<BackEnd, String> {
-    if text == "unit" {
-        return Ok(BackEnd::Unit);
+    match text {
+        "unit" => return Ok(BackEnd::Unit),
+        "joint-sobol" => return Ok(BackEnd::JointSobol(MAX_BLOCK)),
+        "joint-sobol-4d" => return Ok(BackEnd::JointSobol(4)),
+        _ => {}
     }
     text.parse()
         .map(BackEnd::Sampler)
@@ -101,11 +115,12 @@ fn workload(text: &str) -> Result<(Workload, Through), String> {
         "2d" => Workload::TwoD,
         "4d" => Workload::FourD,
         "path" => Workload::Path,
+        "path-call" => Workload::PathCall,
         "none" => Workload::None,
         "loop" => Workload::Loop,
         _ => {
             return Err(format!(
-                "{} is not one of 1d, 2d, 4d, path, none, loop (each may end in -any or -any-owned)",
+                "{} is not one of 1d, 2d, 4d, path, path-call, none, loop (each may end in -any or -any-owned)",
                 shared::quoted(text)
             ));
         }
@@ -152,6 +167,13 @@ fn run<P: PixelSampler + Copy>(sampler: P, workload: Workload, inputs: &[([u32; 
                 }
                 s
             }
+            Workload::PathCall => {
+                let mut s = 0.0;
+                for _ in 0..3 {
+                    s += d.next_1d() + d.next_1d() + d.next_2d().element_sum();
+                }
+                s
+            }
             Workload::None | Workload::Loop => 0.0,
         };
         black_box(&d);
@@ -188,7 +210,11 @@ fn main() -> ExitCode {
         .collect();
     let total = match back_end {
         BackEnd::Unit => {
-            let draws = if workload == Workload::Path { 9 } else { 1 };
+            let draws = if matches!(workload, Workload::Path | Workload::PathCall) {
+                9
+            } else {
+                1
+            };
             inputs
                 .iter()
                 .map(|&([px, py], i)| {
@@ -204,6 +230,19 @@ fn main() -> ExitCode {
                         .sum::<f32>()
                 })
                 .sum::<f32>()
+        }
+        BackEnd::JointSobol(block) => {
+            if through != Through::Static {
+                return shared::exit(
+                    "draw_cost",
+                    Err(Failure::Input(
+                        "the study's candidates are not AnyPixelSampler kinds: static workloads only"
+                            .to_owned(),
+                    )),
+                );
+            }
+            let joint = JointSobol::new(block, 0).expect("the study's blocks are valid");
+            run::<&JointSobol>(&joint, workload, &inputs)
         }
         BackEnd::Sampler(kind) => {
             let any = match kind.build(16, [1920, 1080], 0) {

@@ -34,6 +34,8 @@
 mod analysis;
 mod cli;
 mod cornell;
+#[path = "../shared/joint_sobol.rs"]
+mod joint_sobol;
 #[path = "../shared/machine.rs"]
 mod machine;
 mod output;
@@ -559,9 +561,10 @@ impl<'a> SceneJob<'a> {
                     self.filter,
                     self.mode,
                 ),
-                (Built::Film(_), FrameSampler::Pcg32(_)) => {
+                (Built::Film(_), FrameSampler::Pcg32(_) | FrameSampler::JointSobol(_)) => {
                     unreachable!(
-                        "pcg32 renders the path-traced scene only (TracerSampler::renders)"
+                        "pcg32 and the study's candidates render the path-traced scene only \
+                         (TracerSampler::renders)"
                     )
                 }
                 (Built::PathTraced, frame_sampler) => path::render(

@@ -32,6 +32,7 @@ use wellspread::glam::{Vec2, Vec4};
 use wellspread::{AnyPixelSampler, Domain, PixelSampler, PixelSamplerKind, SamplerKind};
 
 use crate::cornell::{Light, PathSamples, SampleSource, Tracing, render_cornell};
+use crate::joint_sobol::JointSobol;
 use crate::render::{FilmLens, Image, TracerSampler};
 
 /// A [`SampleSource`] over a pixel sampler's domains.
@@ -42,6 +43,17 @@ pub struct Domains<P> {
     /// `Some(key)`: every sample's root is `start(pixel, index).branch(key)`
     /// rather than the start domain itself.
     pub root_branch: Option<u32>,
+}
+
+impl<P> Domains<P> {
+    /// A frame's source: every sample's root is its start domain.
+    pub fn frame(sampler: P, film_lens: FilmLens) -> Self {
+        Self {
+            sampler,
+            film_lens,
+            root_branch: None,
+        }
+    }
 }
 
 /// One path's samples: a domain and how its film and lens are drawn.
@@ -102,6 +114,7 @@ impl<P: PixelSampler + Copy> PathSamples for DomainSamples<P> {
 pub enum FrameSampler {
     Pixel(AnyPixelSampler),
     Pcg32(Pcg32Source),
+    JointSobol(JointSobol),
 }
 
 impl FrameSampler {
@@ -114,6 +127,10 @@ impl FrameSampler {
         (width, height): (u32, u32),
         frame: u32,
     ) -> Result<Self, wellspread::Error> {
+        if let TracerSampler::JointSobol { block } = sampler {
+            let joint = JointSobol::new(block, frame).expect("the study's blocks are valid");
+            return Ok(FrameSampler::JointSobol(joint));
+        }
         match sampler.pixel_kind() {
             Some(kind) => kind
                 .build(spp, [width, height], frame)
@@ -207,17 +224,17 @@ pub fn render(
     film_lens: FilmLens,
     tracing: Tracing,
 ) -> Image {
+    // Borrowed: each path's domain is 32 bytes (owned, 112).
     let pixels = match sampler {
         FrameSampler::Pixel(sampler) => {
-            // Borrowed: each path's domain is 32 bytes (owned, 112).
-            let source = Domains {
-                sampler: &sampler,
-                film_lens,
-                root_branch: None,
-            };
+            let source = Domains::frame(&sampler, film_lens);
             render_cornell(width, height, spp, &source, tracing)
         }
         FrameSampler::Pcg32(source) => render_cornell(width, height, spp, &source, tracing),
+        FrameSampler::JointSobol(sampler) => {
+            let source = Domains::frame(&sampler, film_lens);
+            render_cornell(width, height, spp, &source, tracing)
+        }
     };
     Image {
         width,

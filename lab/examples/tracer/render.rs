@@ -163,7 +163,22 @@ pub enum TracerSampler {
     /// path-traced scene only (the 2D scenes take their film positions
     /// from a [`PixelSampler`]).
     Pcg32,
+    /// A candidate of the progressive joint-stratification study
+    /// (`docs/joint_study.md`, `shared/joint_sobol.rs`): successive
+    /// dimensions of one Owen-scrambled Sobol' sequence, `block` of them
+    /// per copy. Not the crate; the path-traced scene only.
+    JointSobol { block: u32 },
 }
+
+/// The study's one-sequence candidate: every draw of a path one Sobol'
+/// dimension further (Joe and Kuo's first 21, then a new copy).
+pub const JOINT_SOBOL: TracerSampler = TracerSampler::JointSobol {
+    block: crate::joint_sobol::MAX_BLOCK,
+};
+
+/// The study's nested 4D candidate: Sobol' dimensions 0 to 3, a new copy
+/// every four dimensions.
+pub const JOINT_SOBOL_4D: TracerSampler = TracerSampler::JointSobol { block: 4 };
 
 /// `sobol`, the pixel sampler both sides of the 4D-versus-pairs rows use.
 pub const SOBOL: TracerSampler = TracerSampler::Pixel(PixelSamplerKind::Padded(SamplerKind::Sobol));
@@ -183,14 +198,23 @@ impl TracerSampler {
             TracerSampler::Pixel(kind) => kind.name(),
             TracerSampler::SobolPairs => "sobol-pairs",
             TracerSampler::Pcg32 => "pcg32",
+            TracerSampler::JointSobol { block: 4 } => "joint-sobol-4d",
+            TracerSampler::JointSobol { .. } => "joint-sobol",
         }
+    }
+
+    /// The study's candidates: rendered only when asked for by name.
+    pub fn study() -> [TracerSampler; 2] {
+        [JOINT_SOBOL, JOINT_SOBOL_4D]
     }
 
     /// How the path-traced scene draws its film offset and lens point
     /// (`pcg32` draws four numbers in a row either way).
     pub fn film_lens(self) -> FilmLens {
         match self {
-            TracerSampler::Pixel(_) | TracerSampler::Pcg32 => FilmLens::Joint,
+            TracerSampler::Pixel(_) | TracerSampler::Pcg32 | TracerSampler::JointSobol { .. } => {
+                FilmLens::Joint
+            }
             TracerSampler::SobolPairs => FilmLens::Pairs,
         }
     }
@@ -202,16 +226,19 @@ impl TracerSampler {
         match self {
             TracerSampler::Pixel(_) => true,
             TracerSampler::SobolPairs => scene.has_lens(),
-            TracerSampler::Pcg32 => matches!(scene.build(1, 1), Built::PathTraced),
+            TracerSampler::Pcg32 | TracerSampler::JointSobol { .. } => {
+                matches!(scene.build(1, 1), Built::PathTraced)
+            }
         }
     }
 
-    /// The library pixel sampler this one builds; `None` for `pcg32`.
+    /// The library pixel sampler this one builds; `None` for `pcg32` and
+    /// the study's candidates.
     pub fn pixel_kind(self) -> Option<PixelSamplerKind> {
         match self {
             TracerSampler::Pixel(kind) => Some(kind),
             TracerSampler::SobolPairs => Some(PixelSamplerKind::Padded(SamplerKind::Sobol)),
-            TracerSampler::Pcg32 => None,
+            TracerSampler::Pcg32 | TracerSampler::JointSobol { .. } => None,
         }
     }
 
@@ -242,7 +269,13 @@ impl FromStr for TracerSampler {
     /// A name from [`TracerSampler::all`], or any name or alias the
     /// library's [`PixelSamplerKind`] parses (any case, `cmj`, ...).
     fn from_str(name: &str) -> Result<Self, Self::Err> {
-        for lab in [TracerSampler::SobolPairs, TracerSampler::Pcg32] {
+        let [joint, joint_4d] = TracerSampler::study();
+        for lab in [
+            TracerSampler::SobolPairs,
+            TracerSampler::Pcg32,
+            joint,
+            joint_4d,
+        ] {
             if name == lab.name() {
                 return Ok(lab);
             }
@@ -250,7 +283,11 @@ impl FromStr for TracerSampler {
         name.parse::<PixelSamplerKind>()
             .map(TracerSampler::Pixel)
             .map_err(|_| {
-                let names: Vec<&str> = TracerSampler::all().iter().map(|s| s.name()).collect();
+                let names: Vec<&str> = TracerSampler::all()
+                    .iter()
+                    .chain(&TracerSampler::study())
+                    .map(|s| s.name())
+                    .collect();
                 format!(
                     "unknown sampler {name:?}; expected one of: {} (any case; aliases such as cmj)",
                     names.join(" ")
@@ -910,6 +947,16 @@ mod sampler_tests {
                 scene == SceneKind::Cornell
             );
             assert!(SOBOL.renders(scene));
+            for study in TracerSampler::study() {
+                assert_eq!(study.renders(scene), scene == SceneKind::Cornell);
+            }
+        }
+        // The study's candidates parse by name, are no library kind, and
+        // stay out of the default list.
+        for study in TracerSampler::study() {
+            assert_eq!(study.name().parse::<TracerSampler>(), Ok(study));
+            assert_eq!(study.pixel_kind(), None);
+            assert!(!TracerSampler::all().contains(&study));
         }
         assert_eq!(TracerSampler::SobolPairs.film_lens(), FilmLens::Pairs);
         assert_eq!(SOBOL.film_lens(), FilmLens::Joint);
