@@ -122,21 +122,43 @@ impl JointSobol {
         Ok(Self { frame, block })
     }
 
-    /// Scalar dimension `dimension` of sample `index` of the domain
-    /// keyed `key`.
+    /// Scalar dimensions `draw.dimension ..` of the draw's sample: one
+    /// `mix64` and one index shuffle per copy the draw reaches (once,
+    /// unless it crosses into the next block), one table walk and scramble
+    /// per dimension.
     #[inline(always)]
-    fn value(&self, index: u32, key: u64, dimension: u32) -> f32 {
-        let (copy, within) = (dimension / self.block, dimension % self.block);
-        let h = mix64(key ^ u64::from(copy).wrapping_mul(0x9e37_79b9_7f4a_7c15));
-        let mut i = prefix_shuffle(index, h as u32);
-        let column = &COLUMNS[within as usize];
-        let mut x = 0u32;
-        while i != 0 {
-            x ^= column[i.trailing_zeros() as usize];
-            i &= i - 1;
+    fn values<const W: usize>(&self, draw: Draw) -> [f32; W] {
+        let mut out = [0.0; W];
+        let mut block: Option<(u32, u64, u32)> = None;
+        for (dimension, x) in (draw.dimension..).zip(&mut out) {
+            let (copy, within) = (dimension / self.block, dimension % self.block);
+            let (h, mut i) = match block {
+                Some((c, h, i)) if c == copy => (h, i),
+                _ => {
+                    let (h, i) = self.copy(draw, copy);
+                    block = Some((copy, h, i));
+                    (h, i)
+                }
+            };
+            let column = &COLUMNS[within as usize];
+            let mut point = 0u32;
+            while i != 0 {
+                point ^= column[i.trailing_zeros() as usize];
+                i &= i - 1;
+            }
+            let seed = hash_combine((h >> 32) as u32, within);
+            *x = u32_to_unit_f32(owen_scramble_reversed(point, seed).reverse_bits());
         }
-        let seed = hash_combine((h >> 32) as u32, within);
-        u32_to_unit_f32(owen_scramble_reversed(x, seed).reverse_bits())
+        out
+    }
+
+    /// Copy `copy` of the draw's domain: its hash (the shuffle key in the
+    /// low half, the scrambles' seed in the high half) and the shuffled
+    /// index.
+    #[inline(always)]
+    fn copy(&self, draw: Draw, copy: u32) -> (u64, u32) {
+        let h = mix64(draw.key ^ u64::from(copy).wrapping_mul(0x9e37_79b9_7f4a_7c15));
+        (h, prefix_shuffle(draw.index, h as u32))
     }
 }
 
@@ -156,34 +178,20 @@ impl PixelSamplerHooks for JointSobol {
     }
 
     fn draw_1d(&self, draw: Draw) -> f32 {
-        self.value(draw.index, draw.key, draw.dimension)
+        let [x] = self.values(draw);
+        x
     }
 
     fn draw_2d(&self, draw: Draw) -> Vec2 {
-        let d = draw.dimension;
-        Vec2::new(
-            self.value(draw.index, draw.key, d),
-            self.value(draw.index, draw.key, d + 1),
-        )
+        Vec2::from_array(self.values(draw))
     }
 
     fn draw_3d(&self, draw: Draw) -> Vec3 {
-        let d = draw.dimension;
-        Vec3::new(
-            self.value(draw.index, draw.key, d),
-            self.value(draw.index, draw.key, d + 1),
-            self.value(draw.index, draw.key, d + 2),
-        )
+        Vec3::from_array(self.values(draw))
     }
 
     fn draw_4d(&self, draw: Draw) -> Vec4 {
-        let d = draw.dimension;
-        Vec4::new(
-            self.value(draw.index, draw.key, d),
-            self.value(draw.index, draw.key, d + 1),
-            self.value(draw.index, draw.key, d + 2),
-            self.value(draw.index, draw.key, d + 3),
-        )
+        Vec4::from_array(self.values(draw))
     }
 }
 
@@ -269,6 +277,27 @@ mod tests {
             })
             .collect();
         assert_eq!(eighths, [0, 4, 6, 2, 3, 7, 5, 1]);
+    }
+
+    #[test]
+    fn wide_draws_match_one_dimension_at_a_time() {
+        // A draw's copy is computed once per block it reaches: the values
+        // are those of successive 1D draws, across block ends too.
+        for block in [4, MAX_BLOCK] {
+            let s = JointSobol::new(block, 9).unwrap();
+            for index in [0, 1, 5, 63, u32::MAX] {
+                let mut wide: Domain<&JointSobol> = Domain::start(&s, [7, 2], index);
+                let mut narrow: Domain<&JointSobol> = Domain::start(&s, [7, 2], index);
+                let mut got = Vec::new();
+                got.extend(wide.next_4d().to_array());
+                got.extend(wide.next_3d().to_array());
+                got.extend(wide.next_2d().to_array());
+                got.push(wide.next_1d());
+                got.extend(wide.next_4d().to_array());
+                let want: Vec<f32> = (0..got.len()).map(|_| narrow.next_1d()).collect();
+                assert_eq!(got, want, "block {block}, index {index}");
+            }
+        }
     }
 
     #[test]
