@@ -177,12 +177,16 @@ fn draws_are_as_independent_as_separately_shuffled_sets() {
                 let compared = kind != PixelSamplerKind::Padded(SamplerKind::Random)
                     && !what.starts_with("split");
                 // An orthogonal array's successive draws are one set,
-                // stratified jointly: they tie less often than
-                // independent sets, and correlate less.
+                // stratified jointly: they correlate less than independent
+                // sets and, at 4 spp, tie less often. From 16 spp ties are
+                // a few in ten thousand pixels, and the one pair of draws
+                // that crosses a page (padded, so independent) ties as
+                // independent sets do: compared as for the other kinds.
                 let joint = kind == PixelSamplerKind::Orthogonal && what == "successive draws";
                 let tie_ok = !compared
                     || match (spp, progressive) {
-                        _ if joint => ties <= reference.tie_rate() && ratio < 0.9,
+                        (4, _) if joint => ties <= reference.tie_rate() && ratio < 0.9,
+                        _ if joint && ratio >= 0.9 => false,
                         (4, true) => ties <= 0.55,
                         (4, false) | (16, _) => (ties - reference.tie_rate()).abs() <= 0.05,
                         _ => true,

@@ -123,6 +123,88 @@ const fn is_irreducible(p: u32, k: u32, low: u32) -> bool {
     true
 }
 
+/// The prime fields GF(p): sums and products modulo `p`.
+pub(crate) const PRIME: u8 = 0;
+/// GF(2^k), `2 <= k <=` [`TABLED_DEGREE`]: sums by xor, products by
+/// [`BINARY_TABLES`].
+pub(crate) const TABLED: u8 = 1;
+/// GF(2^k), `k >` [`TABLED_DEGREE`]: sums by xor, products by shift and
+/// xor.
+pub(crate) const BINARY: u8 = 2;
+/// GF(p^k), `p` odd and `k > 1`: digit by digit.
+pub(crate) const DIGITS: u8 = 3;
+/// Any field, the kind chosen at each operation: for code that runs too
+/// seldom to be compiled once per kind.
+pub(crate) const ANY: u8 = 4;
+
+/// The largest `k` whose GF(2^k) products come from [`BINARY_TABLES`].
+const TABLED_DEGREE: u32 = 8;
+
+/// Logarithms and powers in GF(2^k), `k` from 1 to [`TABLED_DEGREE`], to
+/// the base of the smallest generator `g` of the field's nonzero elements
+/// (under the modulus [`Field::new`] picks): for `q = 2^k`, `log[q + a]`
+/// is `i < q - 1` with `g^i = a` (for `a != 0`), and `exp[2 q + i]` is
+/// `g^i` for `i < 2 (q - 1)`, twice round the cycle so that a sum of two
+/// logarithms needs no reduction. 1.5 KiB, built at compile time.
+static BINARY_TABLES: ([u8; 512], [u8; 1024]) = binary_tables();
+
+/// [`BINARY_TABLES`], from [`Field::mul_binary`].
+const fn binary_tables() -> ([u8; 512], [u8; 1024]) {
+    let (mut log, mut exp) = ([0; 512], [0; 1024]);
+    let mut k = 1;
+    while k <= TABLED_DEGREE {
+        let q = 1 << k;
+        let Some(field) = Field::new(q) else {
+            panic!("GF(2^k) exists for every k");
+        };
+        // The smallest element of order q - 1 (1, for GF(2)).
+        let mut g = 1;
+        loop {
+            let (mut x, mut order) = (g, 1);
+            while x != 1 {
+                x = field.mul_binary(x, g);
+                order += 1;
+            }
+            if order == q - 1 {
+                break;
+            }
+            g += 1;
+        }
+        let (mut x, mut i) = (1, 0);
+        while i < 2 * (q - 1) {
+            // Every element of GF(2^8) fits in a u8; logarithms are < 255.
+            exp[(2 * q + i) as usize] = x as u8;
+            if i < q - 1 {
+                log[(q + x) as usize] = i as u8;
+            }
+            x = field.mul_binary(x, g);
+            i += 1;
+        }
+        k += 1;
+    }
+    (log, exp)
+}
+
+/// A keyed permutation of GF(q), `x -> scale x + shift` with `scale !=
+/// 0`: an element of the field's affine group, which an
+/// [`OrthogonalArray`](crate::OrthogonalArray) uses to permute the `q`
+/// levels of a column (and, at strength 2, the `q` sub-strata of a level).
+///
+/// The affine group is sharply 2-transitive: with `scale` and `shift`
+/// uniform, the images of two distinct elements are a uniformly random
+/// ordered pair of distinct elements, as under a uniform shuffle. The
+/// variance of an estimate over a randomised array takes its points two at
+/// a time, and Owen's (1992) analysis of it uses only that joint law of two
+/// levels' images, so the affine group serves as well as all `q!`
+/// permutations, for one product and one sum in the field instead of a
+/// shuffle of `q` elements. (It reaches `q (q - 1)` of the `q!` orders:
+/// three or more levels are not uniform jointly.)
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(crate) struct Affine {
+    scale: u32,
+    shift: u32,
+}
+
 impl Field {
     /// GF(q), if `q` is a prime power from 2 to [`MAX_ORDER`].
     pub(crate) const fn new(q: u32) -> Option<Self> {
@@ -163,6 +245,28 @@ impl Field {
         })
     }
 
+    /// The affine permutation keyed by `key`: `shift` and then `scale -
+    /// 1` are the two mixed-radix digits of `key / 2^32` in bases `q` and
+    /// `q - 1`, by multiply-high, so each of the `q (q - 1)` maps is drawn
+    /// `floor` or `ceil` of `2^32 / (q (q - 1))` times over the keys.
+    #[inline(always)]
+    pub(crate) const fn affine(self, key: u32) -> Affine {
+        let q = self.order() as u64;
+        let product = key as u64 * q;
+        let rest = product as u32 as u64;
+        Affine {
+            scale: 1 + ((rest * (q - 1)) >> 32) as u32,
+            shift: (product >> 32) as u32,
+        }
+    }
+
+    /// `map` applied to the element `x < q`, for a field whose
+    /// [`arithmetic`](Self::arithmetic) is `A`.
+    #[inline(always)]
+    pub(crate) const fn apply_as<const A: u8>(self, map: Affine, x: u32) -> u32 {
+        self.add_as::<A>(self.mul_as::<A>(map.scale, x), map.shift)
+    }
+
     /// The number of elements, `q`.
     #[inline(always)]
     pub(crate) const fn order(self) -> u32 {
@@ -172,17 +276,46 @@ impl Field {
     /// `a + b` (`a, b < q`).
     #[inline(always)]
     pub(crate) const fn add(self, a: u32, b: u32) -> u32 {
+        match self.arithmetic() {
+            PRIME => self.add_as::<PRIME>(a, b),
+            TABLED => self.add_as::<TABLED>(a, b),
+            BINARY => self.add_as::<BINARY>(a, b),
+            _ => self.add_as::<DIGITS>(a, b),
+        }
+    }
+
+    /// Which of [`PRIME`], [`TABLED`], [`BINARY`] and [`DIGITS`] computes
+    /// this field's sums and products.
+    #[inline(always)]
+    pub(crate) const fn arithmetic(self) -> u8 {
         if self.k == 1 {
-            let s = a + b;
-            if s >= self.divisor.get() {
-                s - self.divisor.get()
-            } else {
-                s
-            }
-        } else if self.divisor.get() == 2 {
-            a ^ b
+            PRIME
+        } else if self.divisor.get() != 2 {
+            DIGITS
+        } else if self.k <= TABLED_DEGREE {
+            TABLED
         } else {
-            self.add_digits(a, b)
+            BINARY
+        }
+    }
+
+    /// `a + b` for a field whose [`arithmetic`](Self::arithmetic) is `A`:
+    /// callers that add and multiply many times choose `A` once and
+    /// compile a loop for each kind.
+    #[inline(always)]
+    pub(crate) const fn add_as<const A: u8>(self, a: u32, b: u32) -> u32 {
+        match A {
+            PRIME => {
+                let s = a + b;
+                if s >= self.divisor.get() {
+                    s - self.divisor.get()
+                } else {
+                    s
+                }
+            }
+            TABLED | BINARY => a ^ b,
+            DIGITS => self.add_digits(a, b),
+            _ => self.add(a, b),
         }
     }
 
@@ -234,14 +367,36 @@ impl Field {
     /// `a b` (`a, b < q`).
     #[inline(always)]
     pub(crate) const fn mul(self, a: u32, b: u32) -> u32 {
-        if self.k == 1 {
-            // a, b < 4096: the product fits in u32.
-            self.divisor.div_rem(a * b).1
-        } else if self.divisor.get() == 2 {
-            self.mul_binary(a, b)
-        } else {
-            self.mul_digits(a, b)
+        match self.arithmetic() {
+            PRIME => self.mul_as::<PRIME>(a, b),
+            TABLED => self.mul_as::<TABLED>(a, b),
+            BINARY => self.mul_as::<BINARY>(a, b),
+            _ => self.mul_as::<DIGITS>(a, b),
         }
+    }
+
+    /// `a b` for a field whose [`arithmetic`](Self::arithmetic) is `A`.
+    #[inline(always)]
+    pub(crate) const fn mul_as<const A: u8>(self, a: u32, b: u32) -> u32 {
+        match A {
+            // a, b < 4096: the product fits in u32.
+            PRIME => self.divisor.div_rem(a * b).1,
+            TABLED => self.mul_tabled(a, b),
+            BINARY => self.mul_binary(a, b),
+            DIGITS => self.mul_digits(a, b),
+            _ => self.mul(a, b),
+        }
+    }
+
+    /// `a b` in GF(2^k), `k <= 8`, by logarithms: `g^(log a + log b)`.
+    #[inline(always)]
+    const fn mul_tabled(self, a: u32, b: u32) -> u32 {
+        if a == 0 || b == 0 {
+            return 0;
+        }
+        let q = self.order() as usize;
+        let (log, exp) = &BINARY_TABLES;
+        exp[2 * q + log[q + a as usize] as usize + log[q + b as usize] as usize] as u32
     }
 
     /// `a b` in GF(2^k): carry-less shift-and-add from `b`'s top bit down,
@@ -330,6 +485,72 @@ mod tests {
         assert_eq!(gf9.add(5, 5), 7);
     }
 
+    /// The keyed affine maps: over keys spread evenly across u32, every
+    /// one of the `q (q - 1)` maps is drawn, each as often as any other to
+    /// within one (the keys are the multiples of `2^32 / k` for `k` a
+    /// multiple of `q (q - 1)`, so each map gets exactly `k / (q (q - 1))`);
+    /// each is a bijection; and the pair of images of two distinct
+    /// elements is every ordered distinct pair exactly once over the maps
+    /// (sharply 2-transitive).
+    #[test]
+    fn affine_maps_are_uniform_bijections_and_sharply_2_transitive() {
+        for q in [2, 3, 4, 5, 7, 8, 9, 16, 25, 27, 32, 49] {
+            let f = Field::new(q).unwrap();
+            let apply = |map, x| match f.arithmetic() {
+                PRIME => f.apply_as::<PRIME>(map, x),
+                TABLED => f.apply_as::<TABLED>(map, x),
+                BINARY => f.apply_as::<BINARY>(map, x),
+                _ => f.apply_as::<DIGITS>(map, x),
+            };
+            let maps = q * (q - 1);
+            let keys = maps * 64;
+            let mut drawn = std::collections::HashMap::new();
+            for k in 0..keys {
+                let key = (u64::from(k) << 32).div_ceil(u64::from(keys)) as u32;
+                *drawn.entry(f.affine(key)).or_insert(0u32) += 1;
+            }
+            assert_eq!(drawn.len() as u32, maps, "GF({q}): maps reached");
+            assert!(drawn.values().all(|&c| c == 64), "GF({q}): {drawn:?}");
+            for &map in drawn.keys() {
+                let mut seen = std::vec![false; q as usize];
+                for x in 0..q {
+                    let y = apply(map, x);
+                    assert!(y < q && !seen[y as usize], "GF({q}) {map:?}");
+                    seen[y as usize] = true;
+                }
+            }
+            for (x, y) in [(0, 1), (1, q - 1), (q / 2, q - 1)] {
+                if x == y {
+                    continue;
+                }
+                let mut pairs = std::vec![0u32; (q * q) as usize];
+                for &map in drawn.keys() {
+                    pairs[(apply(map, x) * q + apply(map, y)) as usize] += 1;
+                }
+                for a in 0..q {
+                    for b in 0..q {
+                        let expected = u32::from(a != b);
+                        assert_eq!(pairs[(a * q + b) as usize], expected, "GF({q}) {x} {y}");
+                    }
+                }
+            }
+        }
+    }
+
+    /// The logarithm tables give the shift-and-xor product for every pair
+    /// of elements of every GF(2^k) they serve.
+    #[test]
+    fn tabled_binary_products_match_shift_and_xor() {
+        for k in 1..=TABLED_DEGREE {
+            let f = Field::new(1 << k).unwrap();
+            for a in 0..1 << k {
+                for b in 0..1 << k {
+                    assert_eq!(f.mul_tabled(a, b), f.mul_binary(a, b), "GF(2^{k}) {a} {b}");
+                }
+            }
+        }
+    }
+
     /// Field axioms over every element of every field up to 64 elements and
     /// of GF(2^8), GF(3^5) and GF(4096) on sampled triples: 0 and 1 are
     /// the identities, multiplication by a nonzero element is a bijection
@@ -375,6 +596,9 @@ mod tests {
                 );
                 if f.divisor.get() == 2 {
                     assert_eq!(f.mul_binary(a, b), f.mul_digits(a, b), "GF({q})");
+                    if f.k <= TABLED_DEGREE {
+                        assert_eq!(f.mul_tabled(a, b), f.mul_binary(a, b), "GF({q})");
+                    }
                     assert_eq!(f.add(a, b), f.add_digits(a, b));
                 }
             }

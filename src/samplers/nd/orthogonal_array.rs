@@ -1,4 +1,4 @@
-use super::field::{self, Field, prime_power};
+use super::field::{self, ANY, BINARY, DIGITS, Field, PRIME, TABLED, prime_power};
 use super::{check_dimensions, dimension_key, reduce_index};
 use crate::error::Error;
 use crate::primitives::{
@@ -47,14 +47,22 @@ pub enum OrthogonalArrayOffset {
 /// For `t = 2` this is Bose's (1938) array (`a_0 + a_1 c` and `a_1`).
 ///
 /// Each pattern is a new random array: the rows are taken in a keyed
-/// random order, every column's levels are permuted, and dimension `j`
-/// uses a random one of the `q + 1` columns (distinct for distinct
-/// dimensions). Coordinate `j` of a sample is then the permuted level's
-/// stratum `[level / q, (level + 1) / q)`, with the
-/// [`OrthogonalArrayOffset`] deciding where inside it: the multi-jittered
-/// offsets split that stratum into `q^(t - 1)` sub-strata and tell the
-/// points sharing the level apart by the strata of `t - 1` partner
-/// dimensions (dimensions `2k` and `2k + 1` at strength 2).
+/// random order, every dimension permutes its column's levels, and the
+/// dimensions take consecutive columns (cyclically) from a random first
+/// one. Coordinate `j` of a sample is then the permuted level's stratum
+/// `[level / q, (level + 1) / q)`, with the [`OrthogonalArrayOffset`]
+/// deciding where inside it: the multi-jittered offsets split that stratum
+/// into `q^(t - 1)` sub-strata and tell the points sharing the level apart
+/// by the strata of `t - 1` partner dimensions (dimensions `2k` and `2k +
+/// 1` at strength 2), in an order drawn the same way.
+///
+/// A level permutation (and, at strength 2, a sub-stratum order) is a
+/// keyed affine map `x -> a x + b` of GF(q), `a != 0`, not a shuffle of
+/// all `q!` orders: the affine group is sharply 2-transitive, so the
+/// images of any two levels are a uniformly random pair of distinct
+/// levels, which is all that the variance of an estimate over the array
+/// (Owen 1992) depends on, since it takes the points two at a time. It
+/// costs one product and one sum in the field.
 ///
 /// # Properties
 ///
@@ -75,21 +83,24 @@ pub enum OrthogonalArrayOffset {
 ///
 /// # Cost
 ///
-/// Per coordinate: a hash of the dimension's key; permutations of the
-/// `q + 1` columns, the `q` levels and (multi-jittered offsets) the
-/// `q^(t - 1)` sub-strata; the row's polynomial evaluated in its own
-/// column (and, for the multi-jittered offsets, in its `t - 1` partners'),
-/// each `t - 1` field products and sums (for a prime `q` a multiply and a
-/// remainder, for `q = 2^k` about `k` shift-and-xor steps, for other
-/// prime powers a few dozen digit operations); a
-/// [`rand_u32`](crate::primitives::rand_u32) and a fixed-point stratum
-/// conversion. The row permutation of `n` is paid once per sample by
-/// [`sample`](SamplerNd::sample) and once per coordinate by
-/// [`coordinate`](SamplerNd::coordinate); `sample` also evaluates each
-/// group of `t` partner dimensions' columns once for the whole group, so
-/// with multi-jittered offsets it costs about half as much per coordinate
-/// as `coordinate` does. The constructor searches
-/// `GF(q)`'s modulus by trial division (a few thousand operations).
+/// Per pattern: a hash, a keyed permutation of the `n` rows and the first
+/// column. Per coordinate: a hash of the dimension's key; the level's
+/// affine map and (multi-jittered offsets) the sub-stratum's, an affine
+/// map at strength 2 and a keyed permutation of the `q^(t - 1)` sub-strata
+/// above; the row's polynomial evaluated in its own column (and, for the
+/// multi-jittered offsets, in its `t - 1` partners'), each `t - 1` field
+/// products and sums; a [`rand_u32`](crate::primitives::rand_u32) and a
+/// fixed-point stratum conversion. A field product is a multiply and a
+/// remainder for a prime `q`, three table lookups for `q = 2^k` up to 256
+/// (1.5 KiB of logarithms, built at compile time), `k` shift-and-xor steps
+/// for larger powers of two and a few dozen digit operations for other
+/// prime powers. [`sample`](SamplerNd::sample) and
+/// [`coordinates`](SamplerNd::coordinates) pay the per-pattern work once
+/// and evaluate each group of `t` partner dimensions' columns once for the
+/// whole group, with the field's arithmetic and the strength chosen once
+/// per call; [`coordinate`](SamplerNd::coordinate) pays all of it per
+/// coordinate. The constructor searches `GF(q)`'s modulus by trial
+/// division (a few thousand operations).
 ///
 /// # Limits
 ///
@@ -342,10 +353,13 @@ impl OrthogonalArray {
     #[inline(always)]
     fn prepare(&self, pattern: u32) -> ArrayPattern {
         let hash = hash_u32(pattern);
+        let columns = self.q.get() + 1;
+        let first_column = derived_key(hash, salt::ND_COLUMNS);
         ArrayPattern {
             hash,
             rows: Permutation::new(self.n.get(), derived_key(hash, salt::ND_ROWS)),
-            columns: Permutation::new(self.q.get() + 1, derived_key(hash, salt::ND_COLUMNS)),
+            columns,
+            first_column: ((u64::from(first_column) * u64::from(columns)) >> 32) as u32,
         }
     }
 
@@ -353,14 +367,27 @@ impl OrthogonalArray {
     /// coefficients, lowest first), by Horner's rule in GF(q).
     #[inline(always)]
     fn evaluate(&self, row: u32, x: u32) -> u32 {
-        let mut digits = [0; 4];
+        match self.strength {
+            2 => self.evaluate_at::<2, ANY>(row, x),
+            3 => self.evaluate_at::<3, ANY>(row, x),
+            _ => self.evaluate_at::<4, ANY>(row, x),
+        }
+    }
+
+    /// [`evaluate`](Self::evaluate) at strength `T`, its loops unrolled, in a
+    /// field whose arithmetic is `A`.
+    #[inline(always)]
+    fn evaluate_at<const T: usize, const A: u8>(&self, row: u32, x: u32) -> u32 {
+        let mut digits = [0; T];
         let mut rest = row;
-        for digit in digits.iter_mut().take(usize::from(self.strength)) {
+        for digit in &mut digits {
             (rest, *digit) = self.q.div_rem(rest);
         }
-        let mut value = digits[usize::from(self.strength) - 1];
-        for &digit in digits[..usize::from(self.strength) - 1].iter().rev() {
-            value = self.field.add(self.field.mul(value, x), digit);
+        let mut value = digits[T - 1];
+        for &digit in digits[..T - 1].iter().rev() {
+            value = self
+                .field
+                .add_as::<A>(self.field.mul_as::<A>(value, x), digit);
         }
         value
     }
@@ -373,6 +400,17 @@ impl OrthogonalArray {
             self.sub.div_rem(row).0
         } else {
             self.evaluate(row, column)
+        }
+    }
+
+    /// [`raw_level`](Self::raw_level) at strength `T`, in a field whose
+    /// arithmetic is `A`.
+    #[inline(always)]
+    fn raw_level_at<const T: usize, const A: u8>(&self, row: u32, column: u32) -> u32 {
+        if column == self.q.get() {
+            self.sub.div_rem(row).0
+        } else {
+            self.evaluate_at::<T, A>(row, column)
         }
     }
 
@@ -407,7 +445,7 @@ impl OrthogonalArray {
             // `base .. base + t`, and `t <= q + 1`.
             let partner = (base + k) % (q + 1);
             if partner != dimension {
-                index = index * q + self.raw_level(row, pattern.columns.apply(partner));
+                index = index * q + self.raw_level(row, pattern.column(partner));
             }
         }
         index
@@ -423,7 +461,7 @@ impl OrthogonalArray {
         } else {
             dimension % self.dimensions
         };
-        let column = pattern.columns.apply(dimension);
+        let column = pattern.column(dimension);
         self.place(
             index,
             dimension_key(pattern.hash, dimension),
@@ -438,7 +476,26 @@ impl OrthogonalArray {
     /// offsets): the level permutation, then the offset.
     #[inline(always)]
     fn place(&self, index: u32, key: u32, value: u32, sub_index: impl FnOnce() -> u32) -> f32 {
-        let level = Permutation::new(self.q.get(), derived_key(key, salt::ND_STRATA)).apply(value);
+        match self.field.arithmetic() {
+            PRIME => self.place_as::<PRIME>(index, key, value, sub_index),
+            TABLED => self.place_as::<TABLED>(index, key, value, sub_index),
+            BINARY => self.place_as::<BINARY>(index, key, value, sub_index),
+            _ => self.place_as::<DIGITS>(index, key, value, sub_index),
+        }
+    }
+
+    /// [`place`](Self::place) for a field whose arithmetic is `A`.
+    #[inline(always)]
+    fn place_as<const A: u8>(
+        &self,
+        index: u32,
+        key: u32,
+        value: u32,
+        sub_index: impl FnOnce() -> u32,
+    ) -> f32 {
+        let level = self
+            .field
+            .apply_as::<A>(self.field.affine(derived_key(key, salt::ND_STRATA)), value);
         let bits = rand_u32(index, key ^ salt::ND_JITTER);
         let sub_key = match self.offset {
             OrthogonalArrayOffset::Jittered => return self.q.stratum_to_unit_f32(level, bits),
@@ -447,7 +504,13 @@ impl OrthogonalArray {
             }
             OrthogonalArrayOffset::CorrelatedMultiJittered => derived_key(key, salt::ND_SUB_STRATA),
         };
-        let sub = Permutation::new(self.sub.get(), sub_key).apply(sub_index());
+        let sub = if self.strength == 2 {
+            // q sub-strata, one per level of the partner: GF(q) again.
+            self.field
+                .apply_as::<A>(self.field.affine(sub_key), sub_index())
+        } else {
+            Permutation::new(self.sub.get(), sub_key).apply(sub_index())
+        };
         self.n
             .stratum_to_unit_f32(level * self.sub.get() + sub, bits)
     }
@@ -467,15 +530,53 @@ impl OrthogonalArray {
         first: u32,
         out: &mut [f32],
     ) {
-        let (q, t) = (self.q.get(), self.strength());
-        let (mut group, mut levels) = (u32::MAX, [0; 4]);
+        match self.field.arithmetic() {
+            PRIME => self.groups_in::<PRIME>(index, row, pattern, first, out),
+            TABLED => self.groups_in::<TABLED>(index, row, pattern, first, out),
+            BINARY => self.groups_in::<BINARY>(index, row, pattern, first, out),
+            _ => self.groups_in::<DIGITS>(index, row, pattern, first, out),
+        }
+    }
+
+    /// [`coordinates_by_groups`](Self::coordinates_by_groups) in a field
+    /// whose arithmetic is `A`.
+    #[inline(always)]
+    fn groups_in<const A: u8>(
+        &self,
+        index: u32,
+        row: u32,
+        pattern: &ArrayPattern,
+        first: u32,
+        out: &mut [f32],
+    ) {
+        match self.strength {
+            2 => self.coordinates_by_groups_at::<2, A>(index, row, pattern, first, out),
+            3 => self.coordinates_by_groups_at::<3, A>(index, row, pattern, first, out),
+            _ => self.coordinates_by_groups_at::<4, A>(index, row, pattern, first, out),
+        }
+    }
+
+    /// [`coordinates_by_groups`](Self::coordinates_by_groups) at strength
+    /// `T`, its loops over a group unrolled, in a field whose arithmetic is
+    /// `A`.
+    #[inline(always)]
+    fn coordinates_by_groups_at<const T: usize, const A: u8>(
+        &self,
+        index: u32,
+        row: u32,
+        pattern: &ArrayPattern,
+        first: u32,
+        out: &mut [f32],
+    ) {
+        let (q, t) = (self.q.get(), T as u32);
+        let (mut group, mut levels) = (u32::MAX, [0; T]);
         for (dimension, x) in (first..).zip(out.iter_mut()) {
             let base = dimension - dimension % t;
             if base != group {
                 group = base;
                 for (k, level) in (0..t).zip(levels.iter_mut()) {
-                    let column = pattern.columns.apply((base + k) % (q + 1));
-                    *level = self.raw_level(row, column);
+                    let column = pattern.column((base + k) % (q + 1));
+                    *level = self.raw_level_at::<T, A>(row, column);
                 }
             }
             let k = dimension - base;
@@ -487,7 +588,7 @@ impl OrthogonalArray {
                     .fold(0, |index, j| index * q + levels[j as usize])
             };
             let key = dimension_key(pattern.hash, dimension);
-            *x = self.place(index, key, levels[k as usize], sub_index);
+            *x = self.place_as::<A>(index, key, levels[k as usize], sub_index);
         }
     }
 
@@ -505,7 +606,24 @@ impl OrthogonalArray {
 struct ArrayPattern {
     hash: u32,
     rows: Permutation,
-    columns: Permutation,
+    /// `q + 1`, the array's columns.
+    columns: u32,
+    /// The column of dimension 0; dimension `j` takes the `j`-th after it,
+    /// cyclically.
+    first_column: u32,
+}
+
+impl ArrayPattern {
+    /// The column of dimension `dimension` (`< q + 1`).
+    #[inline(always)]
+    fn column(&self, dimension: u32) -> u32 {
+        let column = self.first_column + dimension;
+        if column >= self.columns {
+            column - self.columns
+        } else {
+            column
+        }
+    }
 }
 
 impl SamplerNd for OrthogonalArray {
