@@ -35,11 +35,12 @@ use crate::traits::SamplerNd;
 /// # Cost
 ///
 /// `start` as [`Padded`](crate::Padded)'s (no hash). A draw of width `w`:
-/// one [`mix64`](crate::primitives::mix64) for the page's pattern and `w`
-/// calls of [`SamplerNd::coordinate`], each with its per-pattern work (for
-/// an orthogonal array, two keyed permutations and a field evaluation per
-/// coordinate). Measured against the other pixel samplers in
-/// `docs/performance.md`.
+/// one [`mix64`](crate::primitives::mix64) for the page's pattern and one
+/// call of [`SamplerNd::coordinates`] for its `w` dimensions, which does
+/// the set's per-pattern work once (for an orthogonal array the row order,
+/// then per coordinate two affine maps of GF(q) and the row's polynomial).
+/// A draw that pads pays [`SamplerNd::coordinate`] per dimension. Measured
+/// against the other pixel samplers in `docs/performance.md`.
 ///
 /// # Limits
 ///
