@@ -353,29 +353,17 @@ impl OrthogonalArray {
     #[inline(always)]
     fn prepare(&self, pattern: u32) -> ArrayPattern {
         let hash = hash_u32(pattern);
-        let columns = self.q.get() + 1;
         let first_column = derived_key(hash, salt::ND_COLUMNS);
         ArrayPattern {
             hash,
             rows: Permutation::new(self.n.get(), derived_key(hash, salt::ND_ROWS)),
-            columns,
-            first_column: ((u64::from(first_column) * u64::from(columns)) >> 32) as u32,
+            first_column: ((u64::from(first_column) * u64::from(self.q.get() + 1)) >> 32) as u32,
         }
     }
 
     /// `f(x)` for the row's polynomial `f` (its base-`q` digits are the
-    /// coefficients, lowest first), by Horner's rule in GF(q).
-    #[inline(always)]
-    fn evaluate(&self, row: u32, x: u32) -> u32 {
-        match self.strength {
-            2 => self.evaluate_at::<2, ANY>(row, x),
-            3 => self.evaluate_at::<3, ANY>(row, x),
-            _ => self.evaluate_at::<4, ANY>(row, x),
-        }
-    }
-
-    /// [`evaluate`](Self::evaluate) at strength `T`, its loops unrolled, in a
-    /// field whose arithmetic is `A`.
+    /// coefficients, lowest first), by Horner's rule in GF(q), at strength
+    /// `T` (its loops unrolled) in a field whose arithmetic is `A`.
     #[inline(always)]
     fn evaluate_at<const T: usize, const A: u8>(&self, row: u32, x: u32) -> u32 {
         let mut digits = [0; T];
@@ -392,14 +380,25 @@ impl OrthogonalArray {
         value
     }
 
+    /// The column of dimension `dimension` (`< q + 1`) in `pattern`.
+    #[inline(always)]
+    fn column(&self, pattern: &ArrayPattern, dimension: u32) -> u32 {
+        let (column, columns) = (pattern.first_column + dimension, self.q.get() + 1);
+        if column >= columns {
+            column - columns
+        } else {
+            column
+        }
+    }
+
     /// The level of row `row` in column `column`, before the level
     /// permutation: `f(column)`, or the leading coefficient in column `q`.
     #[inline(always)]
     fn raw_level(&self, row: u32, column: u32) -> u32 {
-        if column == self.q.get() {
-            self.sub.div_rem(row).0
-        } else {
-            self.evaluate(row, column)
+        match self.strength {
+            2 => self.raw_level_at::<2, ANY>(row, column),
+            3 => self.raw_level_at::<3, ANY>(row, column),
+            _ => self.raw_level_at::<4, ANY>(row, column),
         }
     }
 
@@ -445,7 +444,7 @@ impl OrthogonalArray {
             // `base .. base + t`, and `t <= q + 1`.
             let partner = (base + k) % (q + 1);
             if partner != dimension {
-                index = index * q + self.raw_level(row, pattern.column(partner));
+                index = index * q + self.raw_level(row, self.column(pattern, partner));
             }
         }
         index
@@ -461,8 +460,8 @@ impl OrthogonalArray {
         } else {
             dimension % self.dimensions
         };
-        let column = pattern.column(dimension);
-        self.place(
+        let column = self.column(pattern, dimension);
+        self.place::<ANY>(
             index,
             dimension_key(pattern.hash, dimension),
             self.raw_level(row, column),
@@ -473,20 +472,10 @@ impl OrthogonalArray {
     /// The coordinate of sample `index` in the dimension keyed `key`,
     /// whose raw level is `value` and whose place among the rows sharing
     /// that level is `sub_index()` (asked for only by the multi-jittered
-    /// offsets): the level permutation, then the offset.
+    /// offsets): the level permutation, then the offset, in a field whose
+    /// arithmetic is `A`.
     #[inline(always)]
-    fn place(&self, index: u32, key: u32, value: u32, sub_index: impl FnOnce() -> u32) -> f32 {
-        match self.field.arithmetic() {
-            PRIME => self.place_as::<PRIME>(index, key, value, sub_index),
-            TABLED => self.place_as::<TABLED>(index, key, value, sub_index),
-            BINARY => self.place_as::<BINARY>(index, key, value, sub_index),
-            _ => self.place_as::<DIGITS>(index, key, value, sub_index),
-        }
-    }
-
-    /// [`place`](Self::place) for a field whose arithmetic is `A`.
-    #[inline(always)]
-    fn place_as<const A: u8>(
+    fn place<const A: u8>(
         &self,
         index: u32,
         key: u32,
@@ -575,7 +564,7 @@ impl OrthogonalArray {
             if base != group {
                 group = base;
                 for (k, level) in (0..t).zip(levels.iter_mut()) {
-                    let column = pattern.column((base + k) % (q + 1));
+                    let column = self.column(pattern, (base + k) % (q + 1));
                     *level = self.raw_level_at::<T, A>(row, column);
                 }
             }
@@ -588,7 +577,7 @@ impl OrthogonalArray {
                     .fold(0, |index, j| index * q + levels[j as usize])
             };
             let key = dimension_key(pattern.hash, dimension);
-            *x = self.place_as::<A>(index, key, levels[k as usize], sub_index);
+            *x = self.place::<A>(index, key, levels[k as usize], sub_index);
         }
     }
 
@@ -606,24 +595,9 @@ impl OrthogonalArray {
 struct ArrayPattern {
     hash: u32,
     rows: Permutation,
-    /// `q + 1`, the array's columns.
-    columns: u32,
     /// The column of dimension 0; dimension `j` takes the `j`-th after it,
-    /// cyclically.
+    /// cyclically ([`OrthogonalArray::column`]).
     first_column: u32,
-}
-
-impl ArrayPattern {
-    /// The column of dimension `dimension` (`< q + 1`).
-    #[inline(always)]
-    fn column(&self, dimension: u32) -> u32 {
-        let column = self.first_column + dimension;
-        if column >= self.columns {
-            column - self.columns
-        } else {
-            column
-        }
-    }
 }
 
 impl SamplerNd for OrthogonalArray {
@@ -707,13 +681,7 @@ mod tests {
         ] {
             let array = OrthogonalArray::new(n, 1, t).unwrap();
             let q = array.levels();
-            let level = |row: u32, column: u32| {
-                if column == q {
-                    array.sub.div_rem(row).0
-                } else {
-                    array.evaluate(row, column)
-                }
-            };
+            let level = |row: u32, column: u32| array.raw_level(row, column);
             // Every set of t distinct columns, as the increasing t-tuples
             // of 0..=q.
             let t = t as usize;
