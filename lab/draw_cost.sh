@@ -33,11 +33,11 @@ if [ "${1:-}" = study ]; then
     echo
     echo "| back end | start+next_2d | / sobol any | start+next_4d | 9-draw path, keyed / call order | keyed / sobol any |"
     echo "|---|---|---|---|---|---|"
-    for kind in sobol pmj02 orthogonal joint-sobol joint-sobol-4d; do
+    for kind in sobol pmj02 orthogonal faure joint-sobol joint-sobol-4d; do
         k2=$(per $kind 2d); k4=$(per $kind 4d); kp=$(per $kind path); kc=$(per $kind path-call)
         echo "| $kind (static) | $k2 | $(ratio $k2 $s2) | $k4 | $kp / $kc | $(ratio $kp $sp) |"
     done
-    for kind in sobol orthogonal; do
+    for kind in sobol orthogonal faure; do
         k2=$(per $kind 2d-any); k4=$(per $kind 4d-any); kp=$(per $kind path-any); kc=$(per $kind path-call-any)
         echo "| $kind (any) | $k2 | $(ratio $k2 $s2) | $k4 | $kp / $kc | $(ratio $kp $sp) |"
     done
@@ -48,7 +48,7 @@ echo
 echo "| back end | start+next_2d: static / any / owned | any / static | start+next_4d | 9-draw path: static / any / owned | any / static | start: static / any |"
 echo "|---|---|---|---|---|---|---|"
 for kind in regular random jittered n-rooks multi-jittered cmj blue-multi-jittered \
-    hammersley halton sobol pmj02 zsobol blue-noise orthogonal latin-hypercube; do
+    hammersley halton sobol pmj02 zsobol blue-noise orthogonal latin-hypercube faure; do
     s2=$(per $kind 2d); a2=$(per $kind 2d-any); o2=$(per $kind 2d-any-owned)
     s4=$(per $kind 4d)
     sp=$(per $kind path); ap=$(per $kind path-any); op=$(per $kind path-any-owned)

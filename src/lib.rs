@@ -161,7 +161,7 @@ pub mod blue_noise {
     pub use crate::pixel::blue_noise::{ExplicitColumns, PixelColumns, SearchedColumns};
 }
 pub use samplers::{
-    AnySampler, BlueMultiJittered, CorrelatedMultiJittered, Halton, Hammersley, Jittered,
+    AnySampler, BlueMultiJittered, CorrelatedMultiJittered, Faure4D, Halton, Hammersley, Jittered,
     LatinHypercube, MultiJittered, NRooks, OrthogonalArray, OrthogonalArrayOffset, Pmj02, Random,
     Regular, SamplerKind, SamplerVisitor, Sobol, Sobol4D,
 };

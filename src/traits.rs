@@ -108,6 +108,15 @@ pub trait SamplerNd {
     /// Number of coordinates of each sample, at least 1.
     fn dimensions(&self) -> u32;
 
+    /// Whether the set is a progressive sequence, whose prefixes are good
+    /// sets ([`Sobol4D`](crate::Sobol4D), [`Faure4D`](crate::Faure4D)):
+    /// built with no set size (`unbounded()`), it gives
+    /// [`PaddedNd`](crate::PaddedNd) no sample count. `false` unless a
+    /// type says otherwise.
+    fn is_progressive(&self) -> bool {
+        false
+    }
+
     /// Coordinate `dimension` of sample `index` of pattern `pattern`, in
     /// O(1).
     ///

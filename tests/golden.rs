@@ -16,7 +16,7 @@
 //! - `domains.txt`: every `PixelSamplerKind`'s draws through a `Domain`
 //!   (1D, 2D, 4D, a branch and a split) for samples `0..4`;
 //! - `primitives.txt`: hashes, permutations, unit conversions, pattern seeds.
-//! - `nd_samplers.txt`: the [`SamplerNd`] point sets (`LatinHypercube`, `Sobol4D`,
+//! - `nd_samplers.txt`: the [`SamplerNd`] point sets (`LatinHypercube`, `Sobol4D`, `Faure4D`,
 //!   `OrthogonalArray` at every strength and offset) at a few sizes,
 //!   dimension counts and patterns, samples `0..min(n, 8)`, every
 //!   coordinate.
@@ -46,8 +46,8 @@ use wellspread::primitives::{
     u32_to_unit_f32,
 };
 use wellspread::{
-    LatinHypercube, OrthogonalArray, OrthogonalArrayOffset, PixelSampler, PixelSamplerKind,
-    Sampler2D, SamplerKind, SamplerNd, Sobol4D, ZSobol,
+    Faure4D, LatinHypercube, OrthogonalArray, OrthogonalArrayOffset, PixelSampler,
+    PixelSamplerKind, Sampler2D, SamplerKind, SamplerNd, Sobol4D, ZSobol,
 };
 
 /// The (n, pattern) pairs every sampler is pinned at: n = 1 at both pattern
@@ -256,6 +256,11 @@ fn nd_samplers_text() -> String {
         write(
             "sobol-4d 16".to_string(),
             &Sobol4D::new(16).unwrap(),
+            pattern,
+        );
+        write(
+            "faure-4d 16".to_string(),
+            &Faure4D::new(16).unwrap(),
             pattern,
         );
     }

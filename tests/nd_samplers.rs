@@ -1,4 +1,4 @@
-//! The N-dimensional point sets ([`LatinHypercube`], [`OrthogonalArray`],
+//! The N-dimensional point sets ([`LatinHypercube`], [`OrthogonalArray`], [`Faure4D`],
 //! [`Sobol4D`]) through [`SamplerNd`]: range, `sample == coordinate`, and the
 //! stratification of every projection, checked exactly on the f32 values
 //! over many sizes, dimension counts, offsets and patterns (0 and
@@ -7,7 +7,7 @@
 use wellspread::glam::Vec2;
 use wellspread::metrics::is_net_base2;
 use wellspread::{
-    Error, LatinHypercube, OrthogonalArray, OrthogonalArrayOffset, SamplerNd, Sobol4D,
+    Error, Faure4D, LatinHypercube, OrthogonalArray, OrthogonalArrayOffset, SamplerNd, Sobol4D,
 };
 
 const PATTERNS: [u32; 4] = [0, 1, 0xdead_beef, u32::MAX];
@@ -520,4 +520,41 @@ fn sobol_4d_patterns_are_independent_and_sizes_are_checked() {
     let (p, q) = (values(0), values(1));
     let shared = p.iter().filter(|v| q.contains(v)).count();
     assert!(shared < 8, "{shared} shared values");
+}
+
+/// How many of the six pairs of dimensions of `sampler`'s first 16 points
+/// of `pattern` fill the 4 x 4 grid.
+fn pairs_filling_4x4(sampler: &impl SamplerNd, pattern: u32) -> usize {
+    let points: Vec<[f32; 4]> = (0..16)
+        .map(|i| {
+            let mut p = [f32::NAN; 4];
+            sampler.sample(i, pattern, &mut p);
+            assert!(p.iter().all(|x| (0.0..1.0).contains(x)), "{p:?}");
+            p
+        })
+        .collect();
+    let mut filled = 0;
+    for a in 0..4 {
+        for b in a + 1..4 {
+            let mut cells = [0; 16];
+            for p in &points {
+                cells[(p[a] * 4.0) as usize * 4 + (p[b] * 4.0) as usize] += 1;
+            }
+            filled += usize::from(cells == [1; 16]);
+        }
+    }
+    filled
+}
+
+#[test]
+fn faure_4d_fills_every_pair_where_sobol_4d_does_not() {
+    let faure = Faure4D::unbounded();
+    assert_eq!((faure.len(), faure.dimensions()), (u32::MAX, 4));
+    assert!(faure.is_progressive() && !OrthogonalArray::new(16, 5, 2).unwrap().is_progressive());
+    for pattern in PATTERNS {
+        assert_eq!(pairs_filling_4x4(&faure, pattern), 6, "pattern {pattern}");
+        assert!(pairs_filling_4x4(&Sobol4D::unbounded(), pattern) < 6);
+    }
+    assert_eq!(Faure4D::new(0), Err(Error::ZeroSamples));
+    assert_eq!(Faure4D::new(5).unwrap().len(), 5);
 }

@@ -33,7 +33,7 @@ pub mod shared;
 #[path = "shared/joint_sobol.rs"]
 mod joint_sobol;
 
-use joint_sobol::{JointSobol, MAX_BLOCK};
+use joint_sobol::{Candidate, JointSobol};
 
 use shared::Failure;
 
@@ -67,8 +67,8 @@ pub enum Through {
 pub enum BackEnd {
     Unit,
     Sampler(PixelSamplerKind),
-    /// A study candidate: `block` Sobol' dimensions per copy.
-    JointSobol(u32),
+    /// A study candidate (`docs/joint_study.md`).
+    Joint(Candidate),
 }
 
 /// The work per pixel sample.
@@ -91,11 +91,11 @@ pub enum Workload {
 }
 
 fn back_end(text: &str) -> Result<BackEnd, String> {
-    match text {
-        "unit" => return Ok(BackEnd::Unit),
-        "joint-sobol" => return Ok(BackEnd::JointSobol(MAX_BLOCK)),
-        "joint-sobol-4d" => return Ok(BackEnd::JointSobol(4)),
-        _ => {}
+    if text == "unit" {
+        return Ok(BackEnd::Unit);
+    }
+    if let Some(candidate) = Candidate::from_name(text) {
+        return Ok(BackEnd::Joint(candidate));
     }
     text.parse()
         .map(BackEnd::Sampler)
@@ -231,7 +231,7 @@ fn main() -> ExitCode {
                 })
                 .sum::<f32>()
         }
-        BackEnd::JointSobol(block) => {
+        BackEnd::Joint(candidate) => {
             if through != Through::Static {
                 return shared::exit(
                     "draw_cost",
@@ -241,7 +241,7 @@ fn main() -> ExitCode {
                     )),
                 );
             }
-            let joint = JointSobol::new(block, 0).expect("the study's blocks are valid");
+            let joint = JointSobol::candidate(candidate, 0);
             run::<&JointSobol>(&joint, workload, &inputs)
         }
         BackEnd::Sampler(kind) => {

@@ -65,17 +65,17 @@ use crate::primitives::{child_key, salt};
 ///   both give independent draws and the same error (keys make the layout
 ///   robust to code changes); keys are needed wherever the number of
 ///   values drawn before varies (roulette, a material's lobe count).
-/// - **Call order pays with a jointly stratified kind**: for `orthogonal`
-///   ([`PaddedNd`](crate::PaddedNd) over an
-///   [`OrthogonalArray`](crate::OrthogonalArray)) successive draws of one
-///   domain take consecutive dimensions of one array, stratified
-///   pairwise, so a bounce's draws that feed one estimate (a light choice,
-///   a light point, a direction) are stratified together. In the tracer's
-///   direct-light Cornell box (`docs/tracer.md`, Direct light) that cuts
-///   its error off the light to 0.97x keyed draws' at 16 spp and 0.89x at
-///   64, and `orthogonal` has the lowest error per sample at 16 spp;
-///   per unit of time the padded `sobol` and `pmj02` stay ahead there (an
-///   array draw costs several times a sequence draw).
+/// - **Call order pays with a jointly stratified kind**: for `faure`
+///   ([`PaddedNd`](crate::PaddedNd) over [`Faure4D`](crate::Faure4D)) and
+///   `orthogonal` (over an [`OrthogonalArray`](crate::OrthogonalArray))
+///   successive draws of one domain take consecutive dimensions of one
+///   set, stratified pairwise, so a bounce's draws that feed one estimate
+///   (film and lens, a light choice and a light point) are stratified
+///   together: `faure` four dimensions a page at any count, progressively,
+///   at about 1.5x a sequence draw; `orthogonal` `q + 1` a page at counts
+///   `lambda q^2`, at several times. In the tracer's direct-light Cornell
+///   box `faure` has the lowest error at 16 spp and per unit of time at 4
+///   and 16 spp (`docs/joint_study.md`).
 /// - **A discrete choice followed by a draw** (pick a light, then a point
 ///   on it): take the choice from a `next_1d` and the point from the next
 ///   draw (or from `branch(light_index)` if the point's routine belongs to

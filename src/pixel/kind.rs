@@ -9,16 +9,19 @@ use glam::{Vec2, Vec3, Vec4};
 use super::{BlueNoise, Draw, Padded, PaddedNd, PixelSampler, PixelSamplerHooks, Root, ZSobol};
 use crate::error::{Error, UnknownName, same_name};
 use crate::samplers::ALIAS_NAMES as SAMPLER_ALIAS_NAMES;
-use crate::samplers::{AnySampler, LatinHypercube, OrthogonalArray, SamplerKind, SamplerVisitor};
+use crate::samplers::{
+    AnySampler, Faure4D, LatinHypercube, OrthogonalArray, SamplerKind, SamplerVisitor,
+};
 use crate::traits::DomainSampler;
 
 /// The pixel samplers that are not a padded [`SamplerKind`], in
 /// [`PixelSamplerKind::ALL`]'s order.
-const PIXEL_ONLY: [PixelSamplerKind; 4] = [
+const PIXEL_ONLY: [PixelSamplerKind; 5] = [
     PixelSamplerKind::ZSobol,
     PixelSamplerKind::BlueNoise,
     PixelSamplerKind::Orthogonal,
     PixelSamplerKind::LatinHypercube,
+    PixelSamplerKind::Faure,
 ];
 
 /// The pixel-only kinds' short names.
@@ -54,11 +57,11 @@ const PIXEL_ALIAS_NAMES: [&str; SAMPLER_ALIAS_NAMES.len() + PIXEL_ALIASES.len()]
 
 /// Every pixel sampler wellspread offers: [`Padded`] over each
 /// [`SamplerKind`], [`ZSobol`], [`BlueNoise`], and [`PaddedNd`] over an
-/// [`OrthogonalArray`] and a [`LatinHypercube`].
+/// [`OrthogonalArray`], a [`LatinHypercube`] and [`Faure4D`].
 ///
 /// Names are the README's: a [`SamplerKind`] name (`"sobol"`,
 /// `"correlated-multi-jittered"`, ...) for its padded form, `"zsobol"`,
-/// `"blue-noise"`, `"orthogonal"` and `"latin-hypercube"`.
+/// `"blue-noise"`, `"orthogonal"`, `"latin-hypercube"` and `"faure"`.
 /// Parsing ignores case, `-`, `_` and spaces, and accepts the short
 /// aliases `cmj`, `mj`, `pmj`, `rooks` (padded n-rooks, the 2D Latin
 /// hypercube), `stratified`, `white` and `lhs` (`latin-hypercube`, the
@@ -105,12 +108,22 @@ pub enum PixelSamplerKind {
     /// [`PaddedNd`] over a [`LatinHypercube`] of
     /// [`MAX_DIMENSIONS`](LatinHypercube::MAX_DIMENSIONS).
     LatinHypercube,
+    /// [`PaddedNd`] over [`Faure4D`], the (0,4)-sequence in base 4: a
+    /// progressive kind (any count, every power-of-two prefix the same
+    /// set) whose domains read their draws in call order as pages of four
+    /// dimensions, so at 16 spp every pair of a page's dimensions fills the
+    /// `4 x 4` grid (a film and lens `next_4d`, or a light choice and the
+    /// light sample's pair), at 64 spp every triple `4 x 4 x 4`, and each
+    /// dimension is stratified at every power-of-two prefix. What
+    /// `orthogonal` gives at `q = 4`, for four dimensions a page instead of
+    /// five, at every count and at a sequence draw's cost.
+    Faure,
 }
 
 impl PixelSamplerKind {
     /// Every pixel sampler kind: the padded form of each of
     /// [`SamplerKind::ALL`], in its order, then `ZSobol`, `BlueNoise`,
-    /// `Orthogonal` and `LatinHypercube`.
+    /// `Orthogonal`, `LatinHypercube` and `Faure`.
     pub const ALL: &'static [PixelSamplerKind] = &{
         let padded = SamplerKind::ALL.len();
         let mut all = [PixelSamplerKind::ZSobol; SamplerKind::ALL.len() + PIXEL_ONLY.len()];
@@ -132,7 +145,7 @@ impl PixelSamplerKind {
     }
 
     /// The name tools use: the [`SamplerKind`] name, `"zsobol"`,
-    /// `"blue-noise"`, `"orthogonal"` or `"latin-hypercube"`.
+    /// `"blue-noise"`, `"orthogonal"`, `"latin-hypercube"` or `"faure"`.
     #[must_use]
     pub const fn name(self) -> &'static str {
         match self {
@@ -141,6 +154,7 @@ impl PixelSamplerKind {
             PixelSamplerKind::BlueNoise => "blue-noise",
             PixelSamplerKind::Orthogonal => "orthogonal",
             PixelSamplerKind::LatinHypercube => "latin-hypercube",
+            PixelSamplerKind::Faure => "faure",
         }
     }
 
@@ -193,6 +207,9 @@ impl PixelSamplerKind {
             PixelSamplerKind::LatinHypercube => {
                 let cube = LatinHypercube::new(samples_per_pixel, LatinHypercube::MAX_DIMENSIONS)?;
                 AnyPixelSampler::LatinHypercube(PaddedNd::new(cube, frame))
+            }
+            PixelSamplerKind::Faure => {
+                AnyPixelSampler::Faure(PaddedNd::new(Faure4D::new(samples_per_pixel)?, frame))
             }
         })
     }
@@ -288,6 +305,8 @@ pub enum AnyPixelSampler {
     Orthogonal(PaddedNd<OrthogonalArray>),
     /// A Latin hypercube through [`PaddedNd`].
     LatinHypercube(PaddedNd<LatinHypercube>),
+    /// The base-4 (0,4)-sequence through [`PaddedNd`].
+    Faure(PaddedNd<Faure4D>),
 }
 
 impl AnyPixelSampler {
@@ -300,6 +319,7 @@ impl AnyPixelSampler {
             AnyPixelSampler::BlueNoise(_) => PixelSamplerKind::BlueNoise,
             AnyPixelSampler::Orthogonal(_) => PixelSamplerKind::Orthogonal,
             AnyPixelSampler::LatinHypercube(_) => PixelSamplerKind::LatinHypercube,
+            AnyPixelSampler::Faure(_) => PixelSamplerKind::Faure,
         }
     }
 
@@ -319,6 +339,7 @@ impl AnyPixelSampler {
             AnyPixelSampler::BlueNoise(s) => visitor.visit(s),
             AnyPixelSampler::Orthogonal(s) => visitor.visit(s),
             AnyPixelSampler::LatinHypercube(s) => visitor.visit(s),
+            AnyPixelSampler::Faure(s) => visitor.visit(s),
         }
     }
 }
@@ -391,6 +412,7 @@ impl PixelSampler for AnyPixelSampler {
             AnyPixelSampler::BlueNoise(s) => s.samples_per_pixel(),
             AnyPixelSampler::Orthogonal(s) => s.samples_per_pixel(),
             AnyPixelSampler::LatinHypercube(s) => s.samples_per_pixel(),
+            AnyPixelSampler::Faure(s) => s.samples_per_pixel(),
         }
     }
 }
@@ -404,6 +426,7 @@ impl PixelSamplerHooks for AnyPixelSampler {
             AnyPixelSampler::BlueNoise(s) => s.root(pixel),
             AnyPixelSampler::Orthogonal(s) => s.root(pixel),
             AnyPixelSampler::LatinHypercube(s) => s.root(pixel),
+            AnyPixelSampler::Faure(s) => s.root(pixel),
         }
     }
 
@@ -415,6 +438,7 @@ impl PixelSamplerHooks for AnyPixelSampler {
             AnyPixelSampler::BlueNoise(s) => s.locate(index, key),
             AnyPixelSampler::Orthogonal(s) => s.locate(index, key),
             AnyPixelSampler::LatinHypercube(s) => s.locate(index, key),
+            AnyPixelSampler::Faure(s) => s.locate(index, key),
         }
     }
 
@@ -426,6 +450,7 @@ impl PixelSamplerHooks for AnyPixelSampler {
             AnyPixelSampler::BlueNoise(s) => kernel_1d(s, draw),
             AnyPixelSampler::Orthogonal(s) => kernel_1d(s, draw),
             AnyPixelSampler::LatinHypercube(s) => kernel_1d(s, draw),
+            AnyPixelSampler::Faure(s) => kernel_1d(s, draw),
         }
     }
 
@@ -437,6 +462,7 @@ impl PixelSamplerHooks for AnyPixelSampler {
             AnyPixelSampler::BlueNoise(s) => kernel_2d(s, draw),
             AnyPixelSampler::Orthogonal(s) => kernel_2d(s, draw),
             AnyPixelSampler::LatinHypercube(s) => kernel_2d(s, draw),
+            AnyPixelSampler::Faure(s) => kernel_2d(s, draw),
         }
     }
 
@@ -448,6 +474,7 @@ impl PixelSamplerHooks for AnyPixelSampler {
             AnyPixelSampler::BlueNoise(s) => kernel_3d(s, draw),
             AnyPixelSampler::Orthogonal(s) => kernel_3d(s, draw),
             AnyPixelSampler::LatinHypercube(s) => kernel_3d(s, draw),
+            AnyPixelSampler::Faure(s) => kernel_3d(s, draw),
         }
     }
 
@@ -459,6 +486,7 @@ impl PixelSamplerHooks for AnyPixelSampler {
             AnyPixelSampler::BlueNoise(s) => kernel_4d(s, draw),
             AnyPixelSampler::Orthogonal(s) => kernel_4d(s, draw),
             AnyPixelSampler::LatinHypercube(s) => kernel_4d(s, draw),
+            AnyPixelSampler::Faure(s) => kernel_4d(s, draw),
         }
     }
 }

@@ -44,9 +44,10 @@ use crate::traits::SamplerNd;
 ///
 /// # Limits
 ///
-/// Every `[u32; 2]` is a pixel. An index at or beyond `len()` is pass
-/// `index / len()`, an independent set (the fixed-size rule of
-/// [`PixelSampler`]). [`sample_pixel`](PixelSampler::sample_pixel)`(_, _,
+/// Every `[u32; 2]` is a pixel. For a fixed-size set an index at or
+/// beyond `len()` is pass `index / len()`, an independent set (the
+/// fixed-size rule of [`PixelSampler`]); a progressive sequence
+/// ([`SamplerNd::is_progressive`]) goes on along the sequence. [`sample_pixel`](PixelSampler::sample_pixel)`(_, _,
 /// pair)` is the `pair`-th `next_2d` after `pair` calls of `next_2d` (it
 /// reads dimensions `2 pair`, `2 pair + 1`): a domain that mixed widths
 /// reads other dimensions.
@@ -138,9 +139,17 @@ impl<S: SamplerNd> PaddedNd<S> {
 }
 
 impl<S: SamplerNd + Send + Sync> PixelSampler for PaddedNd<S> {
+    /// `None` for a progressive sequence built with no set size
+    /// ([`SamplerNd::is_progressive`], `len() == u32::MAX`); otherwise the
+    /// set's `len()` times the passes counted.
     #[inline]
     fn samples_per_pixel(&self) -> Option<u32> {
-        Some(self.sampler.len().wrapping_mul(self.passes))
+        let n = self.sampler.len();
+        if self.sampler.is_progressive() && n == u32::MAX {
+            None
+        } else {
+            Some(n.wrapping_mul(self.passes))
+        }
     }
 }
 
@@ -152,9 +161,14 @@ impl<S: SamplerNd + Send + Sync> PixelSamplerHooks for PaddedNd<S> {
         packed_root(pixel, self.frame)
     }
 
+    /// A fixed-size set's passes; a progressive sequence continues.
     #[inline]
     fn locate(&self, index: u32, key: u64) -> (u32, u64) {
-        locate_pass(index, self.sampler.len(), key)
+        if self.sampler.is_progressive() {
+            (index, key)
+        } else {
+            locate_pass(index, self.sampler.len(), key)
+        }
     }
 
     #[inline]

@@ -182,6 +182,10 @@ pub(crate) mod salt {
     /// [`Sobol4D`](crate::Sobol4D) pattern's stream (fraction bits of
     /// sqrt(37)).
     pub(crate) const SOBOL_SET: u64 = 0x152f_ecd8_f70e_5939;
+    /// Xored into a pattern before the mix that makes a
+    /// [`Faure4D`](crate::Faure4D) pattern's stream (fraction bits of
+    /// sqrt(41)).
+    pub(crate) const FAURE_SET: u64 = 0x6733_2667_ffc0_0b31;
 
     /// The golden ratio's fraction bits in 32 bits (odd, about half its
     /// bits set): the step between Halton's per-level seeds, the
@@ -235,6 +239,7 @@ mod tests {
             salt::RANDOM_INDEX,
             salt::PAGE,
             salt::SOBOL_SET,
+            salt::FAURE_SET,
         ];
         let u32s = [
             salt::ORDER,

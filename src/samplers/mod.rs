@@ -22,4 +22,4 @@ pub(crate) use kind::ALIAS_NAMES;
 pub use kind::{AnySampler, SamplerKind, SamplerVisitor};
 pub use nd::{LatinHypercube, OrthogonalArray, OrthogonalArrayOffset};
 pub use random::Random;
-pub use sequence::{Halton, Pmj02, Sobol, Sobol4D};
+pub use sequence::{Faure4D, Halton, Pmj02, Sobol, Sobol4D};

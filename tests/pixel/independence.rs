@@ -176,13 +176,15 @@ fn draws_are_as_independent_as_separately_shuffled_sets() {
                 // are a slice of one larger set, not a set of their own.
                 let compared = kind != PixelSamplerKind::Padded(SamplerKind::Random)
                     && !what.starts_with("split");
-                // An orthogonal array's successive draws are one set,
-                // stratified jointly: they correlate less than independent
-                // sets and, at 4 spp, tie less often. From 16 spp ties are
-                // a few in ten thousand pixels, and the one pair of draws
-                // that crosses a page (padded, so independent) ties as
-                // independent sets do: compared as for the other kinds.
-                let joint = kind == PixelSamplerKind::Orthogonal && what == "successive draws";
+                // The successive draws of an orthogonal array, and of the
+                // Faure sequence, are one set, stratified jointly: they
+                // correlate less than independent sets and, at 4 spp, tie
+                // less often. From 16 spp ties are a few in ten thousand
+                // pixels, and the one pair of draws that crosses a page
+                // (padded, so independent) ties as independent sets do:
+                // compared as for the other kinds.
+                let joint = matches!(kind, PixelSamplerKind::Orthogonal | PixelSamplerKind::Faure)
+                    && what == "successive draws";
                 let tie_ok = !compared
                     || match (spp, progressive) {
                         (4, _) if joint => ties <= reference.tie_rate() && ratio < 0.9,

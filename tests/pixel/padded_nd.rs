@@ -255,3 +255,57 @@ fn orthogonal_counts_without_a_prime_power_square_factor_are_errors() {
         Err(Error::ZeroSamples)
     );
 }
+
+#[test]
+fn faure_draws_are_stratified_jointly_at_any_count() {
+    // Call order: film (2D), lens (2D), light choice (1D), light sample
+    // (2D), BSDF (2D): pages of four dimensions, the BSDF pair crossing
+    // into the third page is padded.
+    let widths = [2, 2, 1, 2, 2];
+    for frame in [0, 9, u32::MAX] {
+        for pixel in [[0, 0], [31, 7], [u32::MAX, u32::MAX]] {
+            // Built for any count; the draws do not depend on it.
+            let sampler = PixelSamplerKind::Faure.build(16, [64, 64], frame).unwrap();
+            let other = PixelSamplerKind::Faure.build(37, [64, 64], frame).unwrap();
+            assert_eq!(sampler.samples_per_pixel(), Some(16));
+            assert_eq!(other.samples_per_pixel(), Some(37));
+            let points = |n: u32| -> Vec<Vec<f32>> {
+                (0..n).map(|i| values(sampler, pixel, i, &widths)).collect()
+            };
+            assert_eq!(
+                values(other, pixel, 5, &widths),
+                values(sampler, pixel, 5, &widths)
+            );
+            // 16 samples: every pair inside each page fills 4 x 4.
+            let p = points(16);
+            for page in [0..4, 4..7] {
+                for a in page.clone() {
+                    for b in a + 1..page.end {
+                        assert!(pair_stratified(&p, 4, a, b), "frame {frame}, ({a}, {b})");
+                    }
+                }
+            }
+            // Across a page's end the draws are independent sets.
+            assert!(!pair_stratified(&p, 4, 0, 4) || !pair_stratified(&p, 4, 1, 5));
+            // The padded BSDF pair is still a 2D stratified pair, each
+            // dimension Latin.
+            assert!(pair_stratified(&p, 4, 7, 8) && latin(&p, 7) && latin(&p, 8));
+            // 64 samples: film and lens x (dimensions 0, 1, 2) fill 4 x 4 x 4.
+            let p = points(64);
+            let mut cells = [0; 64];
+            for q in &p {
+                let c = |d: usize| (q[d] * 4.0) as usize;
+                cells[c(0) * 16 + c(1) * 4 + c(2)] += 1;
+            }
+            assert_eq!(cells, [1; 64], "frame {frame}");
+            // Progressive: 48 samples are 64's prefix, every dimension of the
+            // power-of-two prefix Latin.
+            assert_eq!(points(48)[..], p[..48]);
+            assert!((0..9).all(|d| latin(&p, d)));
+        }
+    }
+    assert_eq!(
+        PixelSamplerKind::Faure.build(0, [64, 64], 0),
+        Err(Error::ZeroSamples)
+    );
+}

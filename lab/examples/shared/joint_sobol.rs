@@ -5,15 +5,17 @@
 //! draws in call order are stratified jointly the way an orthogonal
 //! array's page is, at any sample count.
 //!
-//! [`JointSobol`] with `block` dimensions per sequence: the domain's
-//! scalar dimension `d` ([`Draw::dimension`]) reads dimension `d % block`
-//! of the sequence, and each block `d / block` is an independent copy
-//! (its own index shuffle and scrambles), which pads blocks as the crate
-//! pads pairs. `block = 4` is the nested 4D candidate (the crate's
-//! `Sobol4D` dimensions: a (3,4)-sequence, (0,2) on its first pair);
-//! `block = MAX_BLOCK` is pbrt-v4's `SobolSampler` read per pixel: every
-//! draw of a path one dimension further along one sequence, Joe and Kuo's
-//! direction numbers (`new-joe-kuo-6.21201`, their dimensions 1 to 21).
+//! [`JointSobol`] reads a [`Candidate`]'s generator columns, `block` of
+//! its dimensions per copy: the domain's scalar dimension `d`
+//! ([`Draw::dimension`]) reads dimension `d % block` of the sequence, and
+//! each block `d / block` is an independent copy (its own index shuffle and
+//! scrambles), which pads blocks as the crate pads pairs. `joint-sobol` is
+//! pbrt-v4's `SobolSampler` read per pixel: every draw of a path one
+//! dimension further along one sequence, Joe and Kuo's direction numbers
+//! (`new-joe-kuo-6.21201`, their dimensions 1 to 21). `joint-sobol-4d` is
+//! the nested 4D candidate (the crate's `Sobol4D` dimensions: a
+//! (3,4)-sequence, (0,2) on its first pair). The study's winner, the
+//! base-4 (0,4)-sequence, is the crate's `faure` kind (`Faure4D`).
 //!
 //! Per pixel sample and block the index goes through the crate's
 //! `prefix_shuffle` (every power-of-two prefix stays one aligned block, so
@@ -33,7 +35,7 @@ use wellspread::primitives::{
 };
 
 /// Dimensions of the one-sequence candidate: Joe and Kuo's first 21.
-pub const MAX_BLOCK: u32 = 21;
+const MAX_BLOCK: u32 = 21;
 
 /// Joe and Kuo's `s a m_1 .. m_s` for their dimensions 2 to 21 (the
 /// first, the identity, has none); checked against SciPy's unscrambled
@@ -102,24 +104,63 @@ const COLUMNS: [[u32; 32]; MAX_BLOCK as usize] = {
     out
 };
 
-/// A candidate: successive dimensions of one Owen-scrambled Sobol'
+/// The study's candidates, each a table of generator columns read
+/// `block` dimensions per copy.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Candidate {
+    /// pbrt-v4's `SobolSampler` read per pixel: Joe and Kuo's first 21
+    /// Sobol' dimensions, then a new copy.
+    Sobol,
+    /// Sobol' dimensions 0 to 3 (the crate's `Sobol4D`), a new copy every
+    /// four.
+    Sobol4D,
+}
+
+impl Candidate {
+    /// Every candidate, in the order tables list them.
+    pub const ALL: [Candidate; 2] = [Candidate::Sobol, Candidate::Sobol4D];
+
+    /// The command-line name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Candidate::Sobol => "joint-sobol",
+            Candidate::Sobol4D => "joint-sobol-4d",
+        }
+    }
+
+    /// The candidate named `name`, if any.
+    pub fn from_name(name: &str) -> Option<Candidate> {
+        Candidate::ALL.into_iter().find(|c| c.name() == name)
+    }
+
+    /// Dimensions per copy, and their columns.
+    fn columns(self) -> &'static [[u32; 32]] {
+        match self {
+            Candidate::Sobol => &COLUMNS,
+            Candidate::Sobol4D => &COLUMNS[..4],
+        }
+    }
+}
+
+/// A candidate: successive dimensions of one Owen-scrambled digital
 /// sequence per pixel sample, `block` dimensions before the next
 /// independent copy.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct JointSobol {
     frame: u32,
     block: u32,
+    columns: &'static [[u32; 32]],
 }
 
 impl JointSobol {
-    /// `block` dimensions per sequence (2 to [`MAX_BLOCK`]), frame `frame`.
-    pub fn new(block: u32, frame: u32) -> Result<Self, String> {
-        if !(2..=MAX_BLOCK).contains(&block) {
-            return Err(format!(
-                "a joint Sobol' block holds 2 to {MAX_BLOCK} dimensions, not {block}"
-            ));
+    /// The study's candidate `candidate` for frame `frame`.
+    pub fn candidate(candidate: Candidate, frame: u32) -> Self {
+        let columns = candidate.columns();
+        Self {
+            frame,
+            block: columns.len() as u32,
+            columns,
         }
-        Ok(Self { frame, block })
     }
 
     /// Scalar dimensions `draw.dimension ..` of the draw's sample: one
@@ -140,7 +181,7 @@ impl JointSobol {
                     (h, i)
                 }
             };
-            let column = &COLUMNS[within as usize];
+            let column = &self.columns[within as usize];
             let mut point = 0u32;
             while i != 0 {
                 point ^= column[i.trailing_zeros() as usize];
@@ -231,7 +272,7 @@ mod tests {
 
     #[test]
     fn first_pair_is_a_net_at_every_power_of_two_prefix() {
-        let s = JointSobol::new(MAX_BLOCK, 7).unwrap();
+        let s = JointSobol::candidate(Candidate::Sobol, 7);
         for m in 0..=8 {
             let p = points(&s, 1 << m, 2);
             assert!(is_net_pair(&p, 0, 1), "prefix 2^{m}");
@@ -244,7 +285,7 @@ mod tests {
         // choice in the tracer's call order): Joe and Kuo's dimensions 1
         // and 5, whose first 64 points fill every cell of the 8 x 8 grid
         // (SciPy's unscrambled points agree; the pair (0, 5) does not).
-        let s = JointSobol::new(MAX_BLOCK, 2).unwrap();
+        let s = JointSobol::candidate(Candidate::Sobol, 2);
         let p = points(&s, 64, 5);
         let mut seen = [[0u32; 8]; 8];
         for q in &p {
@@ -252,7 +293,7 @@ mod tests {
         }
         assert!(seen.iter().flatten().all(|&c| c == 1), "{seen:?}");
         // Blocks of 4: dimensions 0 and 4 are in different copies.
-        let blocks = JointSobol::new(4, 2).unwrap();
+        let blocks = JointSobol::candidate(Candidate::Sobol4D, 2);
         let p = points(&blocks, 64, 5);
         let mut seen = [[0u32; 8]; 8];
         for q in &p {
@@ -283,8 +324,8 @@ mod tests {
     fn wide_draws_match_one_dimension_at_a_time() {
         // A draw's copy is computed once per block it reaches: the values
         // are those of successive 1D draws, across block ends too.
-        for block in [4, MAX_BLOCK] {
-            let s = JointSobol::new(block, 9).unwrap();
+        for candidate in Candidate::ALL {
+            let s = JointSobol::candidate(candidate, 9);
             for index in [0, 1, 5, 63, u32::MAX] {
                 let mut wide: Domain<&JointSobol> = Domain::start(&s, [7, 2], index);
                 let mut narrow: Domain<&JointSobol> = Domain::start(&s, [7, 2], index);
@@ -295,14 +336,8 @@ mod tests {
                 got.push(wide.next_1d());
                 got.extend(wide.next_4d().to_array());
                 let want: Vec<f32> = (0..got.len()).map(|_| narrow.next_1d()).collect();
-                assert_eq!(got, want, "block {block}, index {index}");
+                assert_eq!(got, want, "{candidate:?}, index {index}");
             }
         }
-    }
-
-    #[test]
-    fn blocks_out_of_range_are_refused() {
-        assert!(JointSobol::new(1, 0).is_err());
-        assert!(JointSobol::new(MAX_BLOCK + 1, 0).is_err());
     }
 }

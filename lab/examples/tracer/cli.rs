@@ -472,8 +472,8 @@ pub fn parse(
          each draws film and lens as one 4D point, and sobol-pairs, cornell only, is\n\
          sobol drawing them as two 2D pairs; pcg32, cornell only, is not the crate:\n\
          rand_pcg's Pcg32 per pixel sample, every number of a path in call order,\n\
-         the baseline of the ratio table; joint-sobol and joint-sobol-4d, cornell only,\n\
-         are the candidates of docs/joint_study.md, not the crate)\n\n{HELP}\n\n{}",
+         the baseline of the ratio table; joint-sobol and joint-sobol-4d,\n\
+         cornell only, are the candidates of docs/joint_study.md, not the crate)\n\n{HELP}\n\n{}",
         names.join(" "),
         shared::EXIT_CODES
     );

@@ -127,9 +127,10 @@ impl FrameSampler {
         (width, height): (u32, u32),
         frame: u32,
     ) -> Result<Self, wellspread::Error> {
-        if let TracerSampler::JointSobol { block } = sampler {
-            let joint = JointSobol::new(block, frame).expect("the study's blocks are valid");
-            return Ok(FrameSampler::JointSobol(joint));
+        if let TracerSampler::Joint(candidate) = sampler {
+            return Ok(FrameSampler::JointSobol(JointSobol::candidate(
+                candidate, frame,
+            )));
         }
         match sampler.pixel_kind() {
             Some(kind) => kind

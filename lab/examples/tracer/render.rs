@@ -13,6 +13,7 @@ use rayon::prelude::*;
 use wellspread::filter::{AnyFilter, Filter, FilterKind, LanczosFilter, TentFilter};
 use wellspread::{PixelSampler, PixelSamplerKind, SamplerKind};
 
+use crate::joint_sobol::Candidate;
 use crate::scenes::{Built, Rgb, Scene, SceneKind};
 
 /// A linear-RGB image, row-major, row 0 at the top.
@@ -165,20 +166,10 @@ pub enum TracerSampler {
     Pcg32,
     /// A candidate of the progressive joint-stratification study
     /// (`docs/joint_study.md`, `shared/joint_sobol.rs`): successive
-    /// dimensions of one Owen-scrambled Sobol' sequence, `block` of them
-    /// per copy. Not the crate; the path-traced scene only.
-    JointSobol { block: u32 },
+    /// dimensions of one Owen-scrambled digital sequence, a new copy
+    /// every few. Not the crate; the path-traced scene only.
+    Joint(Candidate),
 }
-
-/// The study's one-sequence candidate: every draw of a path one Sobol'
-/// dimension further (Joe and Kuo's first 21, then a new copy).
-pub const JOINT_SOBOL: TracerSampler = TracerSampler::JointSobol {
-    block: crate::joint_sobol::MAX_BLOCK,
-};
-
-/// The study's nested 4D candidate: Sobol' dimensions 0 to 3, a new copy
-/// every four dimensions.
-pub const JOINT_SOBOL_4D: TracerSampler = TracerSampler::JointSobol { block: 4 };
 
 /// `sobol`, the pixel sampler both sides of the 4D-versus-pairs rows use.
 pub const SOBOL: TracerSampler = TracerSampler::Pixel(PixelSamplerKind::Padded(SamplerKind::Sobol));
@@ -198,21 +189,20 @@ impl TracerSampler {
             TracerSampler::Pixel(kind) => kind.name(),
             TracerSampler::SobolPairs => "sobol-pairs",
             TracerSampler::Pcg32 => "pcg32",
-            TracerSampler::JointSobol { block: 4 } => "joint-sobol-4d",
-            TracerSampler::JointSobol { .. } => "joint-sobol",
+            TracerSampler::Joint(candidate) => candidate.name(),
         }
     }
 
     /// The study's candidates: rendered only when asked for by name.
     pub fn study() -> [TracerSampler; 2] {
-        [JOINT_SOBOL, JOINT_SOBOL_4D]
+        Candidate::ALL.map(TracerSampler::Joint)
     }
 
     /// How the path-traced scene draws its film offset and lens point
     /// (`pcg32` draws four numbers in a row either way).
     pub fn film_lens(self) -> FilmLens {
         match self {
-            TracerSampler::Pixel(_) | TracerSampler::Pcg32 | TracerSampler::JointSobol { .. } => {
+            TracerSampler::Pixel(_) | TracerSampler::Pcg32 | TracerSampler::Joint(_) => {
                 FilmLens::Joint
             }
             TracerSampler::SobolPairs => FilmLens::Pairs,
@@ -226,7 +216,7 @@ impl TracerSampler {
         match self {
             TracerSampler::Pixel(_) => true,
             TracerSampler::SobolPairs => scene.has_lens(),
-            TracerSampler::Pcg32 | TracerSampler::JointSobol { .. } => {
+            TracerSampler::Pcg32 | TracerSampler::Joint(_) => {
                 matches!(scene.build(1, 1), Built::PathTraced)
             }
         }
@@ -238,7 +228,7 @@ impl TracerSampler {
         match self {
             TracerSampler::Pixel(kind) => Some(kind),
             TracerSampler::SobolPairs => Some(PixelSamplerKind::Padded(SamplerKind::Sobol)),
-            TracerSampler::Pcg32 | TracerSampler::JointSobol { .. } => None,
+            TracerSampler::Pcg32 | TracerSampler::Joint(_) => None,
         }
     }
 
@@ -269,13 +259,10 @@ impl FromStr for TracerSampler {
     /// A name from [`TracerSampler::all`], or any name or alias the
     /// library's [`PixelSamplerKind`] parses (any case, `cmj`, ...).
     fn from_str(name: &str) -> Result<Self, Self::Err> {
-        let [joint, joint_4d] = TracerSampler::study();
-        for lab in [
-            TracerSampler::SobolPairs,
-            TracerSampler::Pcg32,
-            joint,
-            joint_4d,
-        ] {
+        if let Some(candidate) = Candidate::from_name(name) {
+            return Ok(TracerSampler::Joint(candidate));
+        }
+        for lab in [TracerSampler::SobolPairs, TracerSampler::Pcg32] {
             if name == lab.name() {
                 return Ok(lab);
             }

@@ -115,23 +115,35 @@ const fn reverse_pair(a: u32, b: u32) -> (u32, u32) {
     ((r >> 32) as u32, r as u32)
 }
 
-/// Point `s` (an already shuffled index) of the 4D Owen-scrambled Sobol'
-/// set whose scrambles are seeded by `stream`, each coordinate's reversed
-/// digits first xored with `shift` (a digital shift: zeros for the plain
-/// set, a pixel's shift for [`BlueNoise`](crate::BlueNoise)). Dimensions
-/// (0, 1) use [`OwenSeeds::from_stream`]'s seeds, so the first two
-/// coordinates are the 2D draw's; dimensions 2 and 3 two more rotations.
+/// The four scramble seeds of a 4D draw from its well-mixed `stream`:
+/// dimensions 0 and 1 take [`OwenSeeds::from_stream`]'s (so a 4D draw's
+/// first two coordinates are the 2D draw's), dimensions 2 and 3 two more
+/// rotations of its halves.
 #[inline(always)]
-pub(crate) const fn sobol_4d_point(s: u32, stream: u64, shift: [u32; 4]) -> Vec4 {
+pub(crate) const fn seeds_4d(stream: u64) -> [u32; 4] {
     let seeds = OwenSeeds::from_stream(stream);
     let (low, high) = (stream as u32, (stream >> 32) as u32);
-    let z = low.rotate_right(11) ^ high.rotate_right(5) ^ salt::SOBOL_Z;
-    let w = high.rotate_right(21) ^ low.rotate_right(27) ^ salt::SOBOL_W;
+    [
+        seeds.x,
+        seeds.y,
+        low.rotate_right(11) ^ high.rotate_right(5) ^ salt::SOBOL_Z,
+        high.rotate_right(21) ^ low.rotate_right(27) ^ salt::SOBOL_W,
+    ]
+}
+
+/// Point `s` (an already shuffled index) of the 4D Owen-scrambled Sobol'
+/// set whose scrambles are seeded by `stream` ([`seeds_4d`]), each
+/// coordinate's reversed digits first xored with `shift` (a digital shift:
+/// zeros for the plain set, a pixel's shift for
+/// [`BlueNoise`](crate::BlueNoise)).
+#[inline(always)]
+pub(crate) const fn sobol_4d_point(s: u32, stream: u64, shift: [u32; 4]) -> Vec4 {
+    let [x, y, z, w] = seeds_4d(stream);
     let (c0, c1) = sobol_reversed(s);
     let (c2, c3) = dimensions_2_3_reversed(s);
     let (a, b) = reverse_pair(
-        owen_scramble_reversed(c0 ^ shift[0], seeds.x),
-        owen_scramble_reversed(c1 ^ shift[1], seeds.y),
+        owen_scramble_reversed(c0 ^ shift[0], x),
+        owen_scramble_reversed(c1 ^ shift[1], y),
     );
     let (c, d) = reverse_pair(
         owen_scramble_reversed(c2 ^ shift[2], z),

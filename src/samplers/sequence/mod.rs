@@ -11,11 +11,13 @@
 //! [`Halton`]: crate::Halton
 
 pub(crate) mod digital;
+mod faure_4d;
 mod halton;
 pub(crate) mod pmj02;
 pub(crate) mod sobol;
 pub(crate) mod sobol_4d;
 
+pub use faure_4d::Faure4D;
 pub use halton::Halton;
 pub use pmj02::Pmj02;
 pub use sobol::Sobol;

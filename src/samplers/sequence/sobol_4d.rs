@@ -262,6 +262,11 @@ impl SamplerNd for Sobol4D {
     }
 
     #[inline]
+    fn is_progressive(&self) -> bool {
+        true
+    }
+
+    #[inline]
     fn coordinate(&self, index: u32, pattern: u32, dimension: u32) -> f32 {
         debug_assert!(dimension < 4, "dimension {dimension} out of range 0..4");
         Self::point(index, pattern)[dimension as usize % 4]
