@@ -69,7 +69,8 @@ pub(crate) fn check_film(samples_per_pixel: u32, resolution: [u32; 2]) -> Result
 ///   pass's sets by `p`: each pass is a complete set with the sampler's
 ///   guarantees, independent of the others. The progressive sequences
 ///   ([`Sobol`](crate::Sobol), [`Pmj02`](crate::Pmj02),
-///   [`Halton`](crate::Halton), [`BlueNoise`]) go on along their
+///   [`Halton`](crate::Halton), [`BlueNoise`],
+///   [`Faure4D`](crate::Faure4D)) go on along their
 ///   sequence: every prefix `0 .. 2^k` stays a net, and so do passes 0
 ///   and 1 and the first `2^a` passes together, but a single pass `p >= 2`
 ///   is not a net (for passes that are nets each, draw pass `p` from

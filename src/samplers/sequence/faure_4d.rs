@@ -56,10 +56,10 @@
 //! coordinate asked for.
 
 use crate::error::Error;
-use crate::primitives::{mix64, owen_scramble_reversed, prefix_shuffle, salt, u32_to_unit_f32};
+use crate::primitives::{mix64, prefix_shuffle, salt};
 use crate::traits::{SamplerNd, check_nd_out};
 
-use super::digital::{OwenSeeds, seeds_4d};
+use super::digital::{OwenSeeds, scrambled_unit, seeds_4d};
 
 /// Product in GF(4), elements as two bits (bit 0 the coefficient of 1,
 /// bit 1 that of alpha; `alpha^2 = alpha + 1`).
@@ -223,12 +223,6 @@ impl Faure4D {
     }
 }
 
-/// Coordinate `j` from its reversed digits and seed.
-#[inline(always)]
-fn finish(digits: u32, seed: u32) -> f32 {
-    u32_to_unit_f32(owen_scramble_reversed(digits, seed).reverse_bits())
-}
-
 impl SamplerNd for Faure4D {
     #[inline]
     fn len(&self) -> u32 {
@@ -250,7 +244,7 @@ impl SamplerNd for Faure4D {
         debug_assert!(dimension < 4, "dimension {dimension} out of range 0..4");
         let (digits, seeds) = Self::digits(index, pattern);
         let j = dimension as usize % 4;
-        finish(digits[j], seeds[j])
+        scrambled_unit(digits[j], seeds[j])
     }
 
     #[inline]
@@ -259,13 +253,15 @@ impl SamplerNd for Faure4D {
         self.coordinates(index, pattern, 0, check_nd_out(out, 4));
     }
 
-    #[inline]
+    // Inlined into the caller's loop, which knows how many coordinates it
+    // asks for (a domain's draw: one to four).
+    #[inline(always)]
     fn coordinates(&self, index: u32, pattern: u32, first: u32, out: &mut [f32]) {
         let (digits, seeds) = Self::digits(index, pattern);
         for (dimension, x) in (first..).zip(out.iter_mut()) {
             debug_assert!(dimension < 4, "dimension {dimension} out of range 0..4");
             let j = dimension as usize % 4;
-            *x = finish(digits[j], seeds[j]);
+            *x = scrambled_unit(digits[j], seeds[j]);
         }
     }
 }
