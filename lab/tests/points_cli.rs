@@ -503,6 +503,15 @@ fn n_dimensional_sets_write_one_value_per_dimension() {
         cells[stratum(row[1], 2) * 4 + stratum(row[2], 2) * 2 + stratum(row[3], 2)] += 1;
     }
     assert_eq!(cells, [8; 8]);
+    // Faure's (0,4)-sequence at 16 points: every pair fills 4 x 4, here
+    // dimensions 0 and 3.
+    let rows = read_rows(&["--sampler", "faure-4d", "--n", "16", "--dimensions", "4"]);
+    let mut cells = [0; 16];
+    for row in &rows {
+        assert_eq!(row.len(), 4);
+        cells[stratum(row[0], 4) * 4 + stratum(row[3], 4)] += 1;
+    }
+    assert_eq!(cells, [1; 16]);
 }
 
 #[test]
@@ -558,11 +567,19 @@ fn n_dimensional_options_are_checked() {
         ),
         (
             &["--sampler", "latin", "--n", "4"],
-            "N-dimensional: latin-hypercube orthogonal sobol-4d",
+            "N-dimensional: latin-hypercube orthogonal sobol-4d faure-4d",
         ),
         (
             &["--sampler", "sobol-4d", "--n", "4", "--dimensions", "3"],
             "sobol-4d has 4 dimensions",
+        ),
+        (
+            &["--sampler", "faure-4d", "--n", "16", "--dimensions", "2"],
+            "faure-4d has 4 dimensions",
+        ),
+        (
+            &["--sampler", "faure-4d", "--n", "0", "--dimensions", "4"],
+            "--n 0",
         ),
     ];
     for &(args, expected) in cases {

@@ -7,8 +7,8 @@ use std::path::PathBuf;
 
 use clap::{Parser, ValueEnum};
 use wellspread::{
-    AnySampler, LatinHypercube, OrthogonalArray, OrthogonalArrayOffset, Sampler2D, SamplerKind,
-    SamplerNd, Sobol4D,
+    AnySampler, Faure4D, LatinHypercube, OrthogonalArray, OrthogonalArrayOffset, Sampler2D,
+    SamplerKind, SamplerNd, Sobol4D,
 };
 
 #[path = "../shared/cli.rs"]
@@ -29,7 +29,7 @@ pub struct Args {
     #[arg(long, value_name = "P", default_value = "0", value_parser = shared::u32_dec_or_hex)]
     pub pattern: u32,
     /// Coordinates per point: 2 for the 2D samplers; 1 to the set's limit
-    /// for latin-hypercube and orthogonal, 4 for sobol-4d
+    /// for latin-hypercube and orthogonal, 4 for sobol-4d and faure-4d
     #[arg(long, value_name = "D", default_value = "2", value_parser = shared::whole_number)]
     pub dimensions: u32,
     /// Strength of an orthogonal array: 2, 3 or 4
@@ -72,7 +72,7 @@ N-dimensional set, the --projection pair of dimensions).
 }
 
 /// The N-dimensional sets the tool writes besides the [`SamplerKind`]s.
-pub const ND_NAMES: [&str; 3] = ["latin-hypercube", "orthogonal", "sobol-4d"];
+pub const ND_NAMES: [&str; 4] = ["latin-hypercube", "orthogonal", "sobol-4d", "faure-4d"];
 
 /// What `--sampler` names: a 2D sampler or an N-dimensional set.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -85,6 +85,8 @@ pub enum SamplerName {
     Orthogonal,
     /// [`Sobol4D`].
     Sobol4D,
+    /// [`Faure4D`].
+    Faure4D,
 }
 
 /// `--sampler`'s parser: a [`SamplerKind`] name or one of [`ND_NAMES`].
@@ -93,6 +95,7 @@ pub fn sampler_name(name: &str) -> Result<SamplerName, String> {
         "latin-hypercube" => Ok(SamplerName::LatinHypercube),
         "orthogonal" => Ok(SamplerName::Orthogonal),
         "sobol-4d" => Ok(SamplerName::Sobol4D),
+        "faure-4d" => Ok(SamplerName::Faure4D),
         _ => shared::sampler_kind(name)
             .map(SamplerName::Plane)
             .map_err(|e| format!("{e}, or N-dimensional: {}", ND_NAMES.join(" "))),
@@ -141,6 +144,7 @@ pub enum NdSet {
     LatinHypercube(LatinHypercube),
     Orthogonal(OrthogonalArray),
     Sobol4D(Sobol4D),
+    Faure4D(Faure4D),
 }
 
 impl SamplerNd for NdSet {
@@ -149,6 +153,7 @@ impl SamplerNd for NdSet {
             NdSet::LatinHypercube(s) => s.len(),
             NdSet::Orthogonal(s) => s.len(),
             NdSet::Sobol4D(s) => s.len(),
+            NdSet::Faure4D(s) => s.len(),
         }
     }
 
@@ -157,6 +162,7 @@ impl SamplerNd for NdSet {
             NdSet::LatinHypercube(s) => s.dimensions(),
             NdSet::Orthogonal(s) => s.dimensions(),
             NdSet::Sobol4D(s) => s.dimensions(),
+            NdSet::Faure4D(s) => s.dimensions(),
         }
     }
 
@@ -165,6 +171,7 @@ impl SamplerNd for NdSet {
             NdSet::LatinHypercube(s) => s.coordinate(index, pattern, dimension),
             NdSet::Orthogonal(s) => s.coordinate(index, pattern, dimension),
             NdSet::Sobol4D(s) => s.coordinate(index, pattern, dimension),
+            NdSet::Faure4D(s) => s.coordinate(index, pattern, dimension),
         }
     }
 
@@ -173,6 +180,7 @@ impl SamplerNd for NdSet {
             NdSet::LatinHypercube(s) => s.sample(index, pattern, out),
             NdSet::Orthogonal(s) => s.sample(index, pattern, out),
             NdSet::Sobol4D(s) => s.sample(index, pattern, out),
+            NdSet::Faure4D(s) => s.sample(index, pattern, out),
         }
     }
 }
@@ -261,15 +269,23 @@ pub fn parse<I: IntoIterator<Item = OsString>>(
                 })?
                 .with_offset(args.offset.into()),
         )),
-        SamplerName::Sobol4D => {
+        SamplerName::Sobol4D | SamplerName::Faure4D => {
+            let name = if args.sampler == SamplerName::Sobol4D {
+                "sobol-4d"
+            } else {
+                "faure-4d"
+            };
             if d != 4 {
                 return Err(Failure::Input(format!(
-                    "--dimensions {d}: sobol-4d has 4 dimensions"
+                    "--dimensions {d}: {name} has 4 dimensions"
                 )));
             }
-            PointSet::Nd(NdSet::Sobol4D(
-                Sobol4D::new(n).map_err(|e| Failure::Input(format!("--n {n}: {e}")))?,
-            ))
+            let n_checked = |e| Failure::Input(format!("--n {n}: {e}"));
+            PointSet::Nd(if args.sampler == SamplerName::Sobol4D {
+                NdSet::Sobol4D(Sobol4D::new(n).map_err(n_checked)?)
+            } else {
+                NdSet::Faure4D(Faure4D::new(n).map_err(n_checked)?)
+            })
         }
     };
     let projection = args.projection.0;
@@ -355,6 +371,16 @@ pub fn write_points(options: &Options, out: &mut dyn Write) -> io::Result<()> {
                     Strata {
                         coarse: None,
                         rooks: false,
+                    },
+                ),
+                // Every power-of-two prefix is stratified in each dimension;
+                // from 16 points every pair fills 4 x 4.
+                NdSet::Faure4D(faure) => (
+                    "faure-4d".to_owned(),
+                    Strata {
+                        coarse: (faure.len().is_power_of_two() && faure.len() >= 16)
+                            .then_some((4, 4)),
+                        rooks: faure.len().is_power_of_two(),
                     },
                 ),
                 NdSet::Orthogonal(array) => (
