@@ -62,10 +62,15 @@ pub fn section(quick: bool, slope: impl Fn(&[u32], &[Option<f64>]) -> Option<f64
     } else {
         (64, &[16, 32, 64, 128, 256, 512, 1024])
     };
-    let rows: [(&str, &str, Draw); 6] = [
+    // `faure` and `orthogonal` read both ways from one page of one set, so
+    // their two `next_2d` are stratified jointly too.
+    let rows: [(&str, &str, Draw); 9] = [
         ("sobol", "`next_4d`", Draw::FourD),
         ("pmj02", "`next_4d`", Draw::FourD),
         ("zsobol", "`next_4d`", Draw::FourD),
+        ("faure", "`next_4d`", Draw::FourD),
+        ("faure", "two `next_2d`", Draw::Pairs),
+        ("orthogonal", "two `next_2d`", Draw::Pairs),
         ("sobol", "two `next_2d`", Draw::Pairs),
         ("cmj", "two `next_2d`", Draw::Pairs),
         ("random", "two `next_2d`", Draw::Pairs),
@@ -75,7 +80,8 @@ pub fn section(quick: bool, slope: impl Fn(&[u32], &[Option<f64>]) -> Option<f64
         t,
         "## RMSE: coupled 4D integrand exp(-((x0-x2)^2+(x1-x3)^2)) (exact {:.15})\n\n\
          Each pixel of a {side} x {side} film estimates the integral from its n samples, \
-         frame 0; RMSE over the {} pixels. One 4D draw against two padded pairs.\n",
+         frame 0; RMSE over the {} pixels. One 4D draw against two pairs (padded, or one page \
+         of `faure`'s and `orthogonal`'s sets).\n",
         coupled_exact(),
         side * side
     );
