@@ -9,7 +9,8 @@ use crate::primitives::{child_key, hash_combine, locate_pass, salt};
 use crate::traits::SamplerNd;
 
 /// Any [`SamplerNd`] ([`OrthogonalArray`](crate::OrthogonalArray),
-/// [`LatinHypercube`](crate::LatinHypercube)) as a [`PixelSampler`]: the
+/// [`LatinHypercube`](crate::LatinHypercube), [`Faure4D`](crate::Faure4D))
+/// as a [`PixelSampler`]: the
 /// draws of a [`Domain`](crate::Domain) take consecutive dimensions of one
 /// set per pixel (draw `k` of width `w` takes the next `w`), so the
 /// guarantees that tie dimensions together hold across draws: with an

@@ -4,7 +4,8 @@
 //! passes.
 
 use wellspread::{
-    Domain, Error, LatinHypercube, OrthogonalArray, PaddedNd, PixelSampler, PixelSamplerKind,
+    Domain, Error, Faure4D, LatinHypercube, OrthogonalArray, PaddedNd, PixelSampler,
+    PixelSamplerKind, Sobol4D,
 };
 
 /// The values of `draws` (widths) of sample `index` of `pixel`, flattened.
@@ -308,4 +309,26 @@ fn faure_draws_are_stratified_jointly_at_any_count() {
         PixelSamplerKind::Faure.build(0, [64, 64], 0),
         Err(Error::ZeroSamples)
     );
+    // A progressive set built with no size has no count, and an index past
+    // a sized one's count goes on along the sequence (no pass key).
+    assert_eq!(
+        PaddedNd::new(Faure4D::unbounded(), 0).samples_per_pixel(),
+        None
+    );
+    assert_eq!(
+        PaddedNd::new(Sobol4D::unbounded(), 0).samples_per_pixel(),
+        None
+    );
+    let (sized, unbounded) = (
+        PaddedNd::new(Faure4D::new(4).unwrap(), 3),
+        PaddedNd::new(Faure4D::unbounded(), 3),
+    );
+    for index in [3, 4, 17, u32::MAX] {
+        assert_eq!(
+            values(sized, [1, 2], index, &[2, 2]),
+            values(unbounded, [1, 2], index, &[2, 2])
+        );
+    }
+    let array = PaddedNd::new(OrthogonalArray::new(16, 5, 2).unwrap(), 3);
+    assert_eq!(array.samples_per_pixel(), Some(16));
 }
