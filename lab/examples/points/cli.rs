@@ -242,6 +242,16 @@ pub fn parse<I: IntoIterator<Item = OsString>>(
     };
     let n = args.n;
     let d = args.dimensions;
+    let four_dimensions = |name: &str| {
+        if d == 4 {
+            Ok(())
+        } else {
+            Err(Failure::Input(format!(
+                "--dimensions {d}: {name} has 4 dimensions"
+            )))
+        }
+    };
+    let n_checked = |e: wellspread::Error| Failure::Input(format!("--n {n}: {e}"));
     let sampler = match args.sampler {
         SamplerName::Plane(kind) => {
             if d != 2 {
@@ -250,10 +260,7 @@ pub fn parse<I: IntoIterator<Item = OsString>>(
                     ND_NAMES.join(" ")
                 )));
             }
-            PointSet::Plane(
-                kind.build(n)
-                    .map_err(|e| Failure::Input(format!("--n {n}: {e}")))?,
-            )
+            PointSet::Plane(kind.build(n).map_err(n_checked)?)
         }
         SamplerName::LatinHypercube => PointSet::Nd(NdSet::LatinHypercube(
             LatinHypercube::new(n, d)
@@ -269,23 +276,13 @@ pub fn parse<I: IntoIterator<Item = OsString>>(
                 })?
                 .with_offset(args.offset.into()),
         )),
-        SamplerName::Sobol4D | SamplerName::Faure4D => {
-            let name = if args.sampler == SamplerName::Sobol4D {
-                "sobol-4d"
-            } else {
-                "faure-4d"
-            };
-            if d != 4 {
-                return Err(Failure::Input(format!(
-                    "--dimensions {d}: {name} has 4 dimensions"
-                )));
-            }
-            let n_checked = |e| Failure::Input(format!("--n {n}: {e}"));
-            PointSet::Nd(if args.sampler == SamplerName::Sobol4D {
-                NdSet::Sobol4D(Sobol4D::new(n).map_err(n_checked)?)
-            } else {
-                NdSet::Faure4D(Faure4D::new(n).map_err(n_checked)?)
-            })
+        SamplerName::Sobol4D => {
+            four_dimensions("sobol-4d")?;
+            PointSet::Nd(NdSet::Sobol4D(Sobol4D::new(n).map_err(n_checked)?))
+        }
+        SamplerName::Faure4D => {
+            four_dimensions("faure-4d")?;
+            PointSet::Nd(NdSet::Faure4D(Faure4D::new(n).map_err(n_checked)?))
         }
     };
     let projection = args.projection.0;

@@ -5,8 +5,8 @@
 //! draws in call order are stratified jointly the way an orthogonal
 //! array's page is, at any sample count.
 //!
-//! [`JointSobol`] reads a [`Candidate`]'s generator columns, `block` of
-//! its dimensions per copy: the domain's scalar dimension `d`
+//! [`JointSobol`] reads a [`Candidate`]'s Sobol' dimensions, `block` of
+//! them per copy: the domain's scalar dimension `d`
 //! ([`Draw::dimension`]) reads dimension `d % block` of the sequence, and
 //! each block `d / block` is an independent copy (its own index shuffle and
 //! scrambles), which pads blocks as the crate pads pairs. `joint-sobol` is
@@ -104,8 +104,8 @@ const COLUMNS: [[u32; 32]; MAX_BLOCK as usize] = {
     out
 };
 
-/// The study's candidates, each a table of generator columns read
-/// `block` dimensions per copy.
+/// The study's candidates: Joe and Kuo's Sobol' dimensions, read `block`
+/// of them per copy.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Candidate {
     /// pbrt-v4's `SobolSampler` read per pixel: Joe and Kuo's first 21
@@ -133,33 +133,30 @@ impl Candidate {
         Candidate::ALL.into_iter().find(|c| c.name() == name)
     }
 
-    /// Dimensions per copy, and their columns.
-    fn columns(self) -> &'static [[u32; 32]] {
+    /// Dimensions per copy.
+    fn block(self) -> u32 {
         match self {
-            Candidate::Sobol => &COLUMNS,
-            Candidate::Sobol4D => &COLUMNS[..4],
+            Candidate::Sobol => MAX_BLOCK,
+            Candidate::Sobol4D => 4,
         }
     }
 }
 
-/// A candidate: successive dimensions of one Owen-scrambled digital
+/// A candidate: successive dimensions of one Owen-scrambled Sobol'
 /// sequence per pixel sample, `block` dimensions before the next
 /// independent copy.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct JointSobol {
     frame: u32,
     block: u32,
-    columns: &'static [[u32; 32]],
 }
 
 impl JointSobol {
     /// The study's candidate `candidate` for frame `frame`.
     pub fn candidate(candidate: Candidate, frame: u32) -> Self {
-        let columns = candidate.columns();
         Self {
             frame,
-            block: columns.len() as u32,
-            columns,
+            block: candidate.block(),
         }
     }
 
@@ -181,7 +178,7 @@ impl JointSobol {
                     (h, i)
                 }
             };
-            let column = &self.columns[within as usize];
+            let column = &COLUMNS[within as usize];
             let mut point = 0u32;
             while i != 0 {
                 point ^= column[i.trailing_zeros() as usize];

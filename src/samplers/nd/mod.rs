@@ -12,7 +12,7 @@
 //! [`OrthogonalArray`]: crate::OrthogonalArray
 //! [`SamplerNd`]: crate::SamplerNd
 
-mod field;
+pub(crate) mod field;
 mod latin_hypercube;
 mod orthogonal_array;
 

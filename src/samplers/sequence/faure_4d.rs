@@ -57,16 +57,10 @@
 
 use crate::error::Error;
 use crate::primitives::{mix64, prefix_shuffle, salt};
+use crate::samplers::nd::field::Field;
 use crate::traits::{SamplerNd, check_nd_out};
 
 use super::digital::{OwenSeeds, scrambled_unit, seeds_4d};
-
-/// Product in GF(4), elements as two bits (bit 0 the coefficient of 1,
-/// bit 1 that of alpha; `alpha^2 = alpha + 1`).
-const fn gf4_mul(a: u32, b: u32) -> u32 {
-    let (a0, a1, b0, b1) = (a & 1, a >> 1, b & 1, b >> 1);
-    ((a0 & b0) ^ (a1 & b1)) | ((a0 & b1) ^ (a1 & b0) ^ (a1 & b1)) << 1
-}
 
 /// The scale of output digit 0 of each dimension (see the module docs).
 const DIGIT_0_SCALE: [u32; 4] = [1, 2, 3, 1];
@@ -75,6 +69,11 @@ const DIGIT_0_SCALE: [u32; 4] = [1, 2, 3, 1];
 /// crate's reversed-digit form (bit `i` is the digit of weight
 /// `2^-(i+1)`), so that the row of a set bit holds all four dimensions.
 const COLUMNS: [[u32; 4]; 32] = {
+    // GF(4) with alpha^2 = alpha + 1, its one modulus; elements as two bits
+    // (bit 0 the coefficient of 1, bit 1 that of alpha).
+    let Some(gf4) = Field::new(4) else {
+        panic!("GF(4) exists");
+    };
     let mut out = [[0u32; 4]; 32];
     let mut k = 0;
     while k < 32 {
@@ -91,12 +90,12 @@ const COLUMNS: [[u32; 4]; 32] = {
                     let mut power = 1;
                     let mut i = 0;
                     while i < c - r {
-                        power = gf4_mul(power, a);
+                        power = gf4.mul(power, a);
                         i += 1;
                     }
                     let scale = if r == 0 { DIGIT_0_SCALE[j] } else { 1 };
                     // Output digit r has weight 4^-(r+1): bits 31 - 2r, 30 - 2r.
-                    natural |= gf4_mul(scale, gf4_mul(power, value)) << (30 - 2 * r);
+                    natural |= gf4.mul(scale, gf4.mul(power, value)) << (30 - 2 * r);
                 }
                 r += 1;
             }
@@ -241,10 +240,9 @@ impl SamplerNd for Faure4D {
 
     #[inline]
     fn coordinate(&self, index: u32, pattern: u32, dimension: u32) -> f32 {
-        debug_assert!(dimension < 4, "dimension {dimension} out of range 0..4");
-        let (digits, seeds) = Self::digits(index, pattern);
-        let j = dimension as usize % 4;
-        scrambled_unit(digits[j], seeds[j])
+        let mut x = [0.0];
+        self.coordinates(index, pattern, dimension, &mut x);
+        x[0]
     }
 
     #[inline]
@@ -270,20 +268,6 @@ impl SamplerNd for Faure4D {
 mod tests {
     use super::*;
     use std::vec::Vec;
-
-    #[test]
-    fn gf4_is_a_field() {
-        // alpha^2 = alpha + 1, alpha^3 = 1, and every nonzero element has
-        // an inverse.
-        assert_eq!(gf4_mul(2, 2), 3);
-        assert_eq!(gf4_mul(gf4_mul(2, 2), 2), 1);
-        for a in 1..4 {
-            assert_eq!((1..4).filter(|&b| gf4_mul(a, b) == 1).count(), 1);
-            for b in 0..4 {
-                assert_eq!(gf4_mul(a, b), gf4_mul(b, a));
-            }
-        }
-    }
 
     /// Whether the unscrambled points `start .. start + 4^m` put one point
     /// in every base-4 box of volume `4^-m`.
