@@ -201,10 +201,10 @@ pub(crate) mod salt {
     /// The orthogonal array's sub-stratum permutation (multi-jittered
     /// offsets).
     pub(crate) const ND_SUB_STRATA: u32 = 0x7a2f_c639;
-    /// The orthogonal array's choice of columns.
-    pub(crate) const ND_COLUMNS: u32 = 0x5e83_b1d5;
-    /// The orthogonal array's row order.
-    pub(crate) const ND_ROWS: u32 = 0x9647_e2a9;
+    /// Xored into an orthogonal array's pattern before the mix that
+    /// makes its hash, row order and choice of columns (fraction bits of
+    /// sqrt(43)).
+    pub(crate) const ND_PATTERN: u64 = 0x8eb4_4a87_6858_1511;
     /// Where inside its stratum an N-dimensional coordinate lands.
     pub(crate) const ND_JITTER: u32 = 0xd1c5_8a4b;
 
@@ -240,6 +240,7 @@ mod tests {
             salt::PAGE,
             salt::SOBOL_SET,
             salt::FAURE_SET,
+            salt::ND_PATTERN,
         ];
         let u32s = [
             salt::ORDER,
@@ -254,8 +255,6 @@ mod tests {
             salt::GOLDEN_32,
             salt::ND_STRATA,
             salt::ND_SUB_STRATA,
-            salt::ND_COLUMNS,
-            salt::ND_ROWS,
             salt::ND_JITTER,
             salt::LATTICE_OFFSET_X,
             salt::LATTICE_OFFSET_Y,
@@ -288,12 +287,7 @@ mod tests {
     fn derived_key_salts_differ_in_their_top_five_bits() {
         let groups: [&[u32]; 3] = [
             &[salt::ORDER, salt::SHUFFLE_X, salt::SHUFFLE_Y],
-            &[
-                salt::ND_STRATA,
-                salt::ND_SUB_STRATA,
-                salt::ND_COLUMNS,
-                salt::ND_ROWS,
-            ],
+            &[salt::ND_STRATA, salt::ND_SUB_STRATA],
             &[
                 salt::LATTICE_OFFSET_X,
                 salt::LATTICE_OFFSET_Y,

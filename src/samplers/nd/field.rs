@@ -142,15 +142,17 @@ const TABLED_DEGREE: u32 = 8;
 
 /// Logarithms and powers in GF(2^k), `k` from 1 to [`TABLED_DEGREE`], to
 /// the base of the smallest generator `g` of the field's nonzero elements
-/// (under the modulus [`Field::new`] picks): for `q = 2^k`, `log[q + a]`
-/// is `i < q - 1` with `g^i = a` (for `a != 0`), and `exp[2 q + i]` is
-/// `g^i` for `i < 2 (q - 1)`, twice round the cycle so that a sum of two
-/// logarithms needs no reduction. 1.5 KiB, built at compile time.
-static BINARY_TABLES: ([u8; 512], [u8; 1024]) = binary_tables();
+/// (under the modulus [`Field::new`] picks), laid out so that a product is
+/// three loads and no branch: for `q = 2^k`, `log[q + a]` is `i < q - 1`
+/// with `g^i = a` for `a != 0`, and `2 q - 1` for `a = 0`; `exp[4 q + i]`
+/// is `g^i` for `i < 2 (q - 1)` (twice round the cycle, so a sum of two
+/// logarithms needs no reduction) and 0 from there to `4 q`, where every
+/// sum with a zero's logarithm lands. 3 KiB, built at compile time.
+static BINARY_TABLES: ([u16; 512], [u8; 2048]) = binary_tables();
 
 /// [`BINARY_TABLES`], from [`Field::mul_binary`].
-const fn binary_tables() -> ([u8; 512], [u8; 1024]) {
-    let (mut log, mut exp) = ([0; 512], [0; 1024]);
+const fn binary_tables() -> ([u16; 512], [u8; 2048]) {
+    let (mut log, mut exp) = ([0; 512], [0; 2048]);
     let mut k = 1;
     while k <= TABLED_DEGREE {
         let q = 1 << k;
@@ -170,12 +172,13 @@ const fn binary_tables() -> ([u8; 512], [u8; 1024]) {
             }
             g += 1;
         }
+        log[q as usize] = (2 * q - 1) as u16;
         let (mut x, mut i) = (1, 0);
         while i < 2 * (q - 1) {
             // Every element of GF(2^8) fits in a u8; logarithms are < 255.
-            exp[(2 * q + i) as usize] = x as u8;
+            exp[(4 * q + i) as usize] = x as u8;
             if i < q - 1 {
-                log[(q + x) as usize] = i as u8;
+                log[(q + x) as usize] = i as u16;
             }
             x = field.mul_binary(x, g);
             i += 1;
@@ -388,15 +391,16 @@ impl Field {
         }
     }
 
-    /// `a b` in GF(2^k), `k <= 8`, by logarithms: `g^(log a + log b)`.
+    /// `a b` in GF(2^k), `k <= 8`, by logarithms: `g^(log a + log b)`, and
+    /// 0 through the tables' zeros when either is 0.
     #[inline(always)]
     const fn mul_tabled(self, a: u32, b: u32) -> u32 {
-        if a == 0 || b == 0 {
-            return 0;
-        }
         let q = self.order() as usize;
         let (log, exp) = &BINARY_TABLES;
-        exp[2 * q + log[q + a as usize] as usize + log[q + b as usize] as usize] as u32
+        // The masks change nothing for a, b < q <= 256 and let the
+        // compiler drop the bounds checks.
+        let (log_a, log_b) = (log[(q + a as usize) & 511], log[(q + b as usize) & 511]);
+        exp[(4 * q + log_a as usize + log_b as usize) & 2047] as u32
     }
 
     /// `a b` in GF(2^k): carry-less shift-and-add from `b`'s top bit down,
