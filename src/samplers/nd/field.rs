@@ -248,19 +248,33 @@ impl Field {
         })
     }
 
-    /// The affine permutation keyed by `key`: `shift` and then `scale -
-    /// 1` are the two mixed-radix digits of `key / 2^32` in bases `q` and
-    /// `q - 1`, by multiply-high, so each of the `q (q - 1)` maps is drawn
-    /// `floor` or `ceil` of `2^32 / (q (q - 1))` times over the keys.
+    /// The affine permutation keyed by `key`: `shift` and then `e` are the
+    /// two mixed-radix digits of `key / 2^32` in bases `q` and `q - 1`, by
+    /// multiply-high, so each of the `q (q - 1)` maps is drawn `floor` or
+    /// `ceil` of `2^32 / (q (q - 1))` times over the keys. The scale is
+    /// `1 + e`, or `g^e` in a field whose products come from
+    /// [`BINARY_TABLES`] (so that [`apply_keyed_as`](Self::apply_keyed_as)
+    /// reads `e` as the scale's logarithm): either is a bijection of `e`
+    /// onto the nonzero elements.
     #[inline(always)]
     pub(crate) const fn affine(self, key: u32) -> Affine {
+        let (e, shift) = self.affine_digits(key);
+        let scale = if self.arithmetic() == TABLED {
+            let q = self.order() as usize;
+            BINARY_TABLES.1[4 * q + e as usize] as u32
+        } else {
+            1 + e
+        };
+        Affine { scale, shift }
+    }
+
+    /// `(e, shift)` of [`affine`](Self::affine).
+    #[inline(always)]
+    const fn affine_digits(self, key: u32) -> (u32, u32) {
         let q = self.order() as u64;
         let product = key as u64 * q;
         let rest = product as u32 as u64;
-        Affine {
-            scale: 1 + ((rest * (q - 1)) >> 32) as u32,
-            shift: (product >> 32) as u32,
-        }
+        (((rest * (q - 1)) >> 32) as u32, (product >> 32) as u32)
     }
 
     /// `map` applied to the element `x < q`, for a field whose
@@ -268,6 +282,23 @@ impl Field {
     #[inline(always)]
     pub(crate) const fn apply_as<const A: u8>(self, map: Affine, x: u32) -> u32 {
         self.add_as::<A>(self.mul_as::<A>(map.scale, x), map.shift)
+    }
+
+    /// `apply_as(affine(key), x)`, for a field whose
+    /// [`arithmetic`](Self::arithmetic) is `A`: in a tabled field the
+    /// scale's logarithm is the key's digit `e` itself, so the product is
+    /// two table loads instead of three.
+    #[inline(always)]
+    pub(crate) const fn apply_keyed_as<const A: u8>(self, key: u32, x: u32) -> u32 {
+        if A == TABLED {
+            let (e, shift) = self.affine_digits(key);
+            let q = self.order() as usize;
+            let (log, exp) = &BINARY_TABLES;
+            let log_x = log[(q + x as usize) & 511] as usize;
+            (exp[(4 * q + e as usize + log_x) & 2047] as u32) ^ shift
+        } else {
+            self.apply_as::<A>(self.affine(key), x)
+        }
     }
 
     /// The number of elements, `q`.
@@ -531,6 +562,30 @@ mod tests {
                         let expected = u32::from(a != b);
                         assert_eq!(pairs[(a * q + b) as usize], expected, "GF({q}) {x} {y}");
                     }
+                }
+            }
+        }
+    }
+
+    /// The keyed application's shortcut (the scale's logarithm read off
+    /// the key) is the map `affine` draws, in every kind of field, for
+    /// keys across the whole range.
+    #[test]
+    fn keyed_application_is_the_drawn_map() {
+        for q in [2, 3, 4, 5, 8, 9, 16, 25, 64, 256, 512, 4096] {
+            let f = Field::new(q).unwrap();
+            for k in 0..2_000u32 {
+                let key = k.wrapping_mul(0x9e37_79b9) ^ (k >> 3);
+                let map = f.affine(key);
+                for x in [0, 1, q / 2, q - 1] {
+                    let expected = f.apply_as::<ANY>(map, x);
+                    let keyed = match f.arithmetic() {
+                        PRIME => f.apply_keyed_as::<PRIME>(key, x),
+                        TABLED => f.apply_keyed_as::<TABLED>(key, x),
+                        BINARY => f.apply_keyed_as::<BINARY>(key, x),
+                        _ => f.apply_keyed_as::<DIGITS>(key, x),
+                    };
+                    assert_eq!(keyed, expected, "GF({q}) key {key:#x} x {x}");
                 }
             }
         }

@@ -85,7 +85,7 @@ pub enum OrthogonalArrayOffset {
 ///
 /// Per pattern: one [`mix64`](crate::primitives::mix64) for the
 /// pattern's hash, the row order's key and the first column. Per sample:
-/// the row, `t + 1` Feistel steps of about ten operations on its digits
+/// the row, `t` Feistel steps of about fifteen operations on its digits
 /// (no cycle walk). Per coordinate: one `mix64` of the pattern's hash and
 /// the dimension, which draws the level's affine map, the sub-stratum's
 /// (an affine map at strength 2, a keyed permutation of the `q^(t - 1)`
@@ -382,16 +382,17 @@ impl OrthogonalArray {
 
     /// The base-`q` digits, lowest first, of [`row`](Self::row) at
     /// strength `T`: a Feistel network on the `T` digits of `index`. Step
-    /// `s` (of `T + 1`) adds to digit `s mod T`, modulo `q`, a keyed hash
-    /// of the other digits reduced to `0..q`; each step is a bijection
-    /// whatever the hash (subtracting the same value undoes it), so the
-    /// row order is one. The hash is nonlinear, so two patterns' row
-    /// orders are not related by an affine map of the digits, which would
-    /// tie a column of one array to a column of the other (Luby & Rackoff
-    /// 1988: three such steps with random round functions make a
-    /// pseudo-random permutation). Cost: `T + 1` steps of about ten
-    /// operations, against four or five hash rounds and a cycle walk for
-    /// a keyed permutation of `n`.
+    /// `j` adds to digit `j`, modulo `q`, a keyed hash of the other digits
+    /// (those before it already updated) reduced to `0..q`; each step is a
+    /// bijection whatever the hash (subtracting the same value undoes it),
+    /// so the row order is one. The hash is nonlinear, so two patterns'
+    /// row orders are not related by an affine map of the digits, which
+    /// would tie a column of one array to a column of the other (the
+    /// reason a linear order of the rows cannot serve); and for a fixed
+    /// sample the row is uniform over patterns (tested). Every guarantee
+    /// of the array holds for any order of its rows. Cost: `T` steps of
+    /// about fifteen operations, against four or five hash rounds and a
+    /// cycle walk for a keyed permutation of `n`.
     #[inline(always)]
     fn row_digits<const T: usize>(&self, key: u32, index: u32) -> [u32; T] {
         let q = self.q.get();
@@ -400,15 +401,14 @@ impl OrthogonalArray {
         for digit in &mut digits {
             (rest, *digit) = self.q.div_rem(rest);
         }
-        for step in 0..=T {
-            let j = step % T;
+        for j in 0..T {
             let mut others = 0;
             for (k, &digit) in digits.iter().enumerate() {
                 if k != j {
                     others = others * q + digit;
                 }
             }
-            let h = (others ^ key.rotate_left(11 * step as u32)).wrapping_mul(0x7feb_352d);
+            let h = (others ^ key.rotate_left(11 * j as u32)).wrapping_mul(0x7feb_352d);
             let h = (h ^ (h >> 15)).wrapping_mul(0x846c_a68b);
             let shift = ((u64::from(h) * u64::from(q)) >> 32) as u32;
             let sum = digits[j] + shift;
@@ -550,7 +550,7 @@ impl OrthogonalArray {
         sub_index: impl FnOnce() -> u32,
     ) -> f32 {
         let (low, high) = (key as u32, (key >> 32) as u32);
-        let level = self.field.apply_as::<A>(self.field.affine(low), value);
+        let level = self.field.apply_keyed_as::<A>(low, value);
         let bits = hash_u32(index ^ (key >> 16) as u32);
         let sub_key = match self.offset {
             OrthogonalArrayOffset::Jittered => return self.q.stratum_to_unit_f32(level, bits),
@@ -561,8 +561,7 @@ impl OrthogonalArray {
         };
         let sub = if self.strength == 2 {
             // q sub-strata, one per level of the partner: GF(q) again.
-            self.field
-                .apply_as::<A>(self.field.affine(sub_key), sub_index())
+            self.field.apply_keyed_as::<A>(sub_key, sub_index())
         } else {
             Permutation::new(self.sub.get(), sub_key).apply(sub_index())
         };
@@ -577,13 +576,7 @@ impl OrthogonalArray {
     /// [`coordinate_of`](Self::coordinate_of) with a `t`-th of its
     /// evaluations.
     #[inline(always)]
-    fn coordinates_by_groups(
-        &self,
-        index: u32,
-        pattern: &ArrayPattern,
-        first: u32,
-        out: &mut [f32],
-    ) {
+    fn coordinates_by_groups(&self, index: u32, pattern: u32, first: u32, out: &mut [f32]) {
         match self.field.arithmetic() {
             PRIME => self.groups_in::<PRIME>(index, pattern, first, out),
             TABLED => self.groups_in::<TABLED>(index, pattern, first, out),
@@ -595,13 +588,7 @@ impl OrthogonalArray {
     /// [`coordinates_by_groups`](Self::coordinates_by_groups) in a field
     /// whose arithmetic is `A`.
     #[inline(always)]
-    fn groups_in<const A: u8>(
-        &self,
-        index: u32,
-        pattern: &ArrayPattern,
-        first: u32,
-        out: &mut [f32],
-    ) {
+    fn groups_in<const A: u8>(&self, index: u32, pattern: u32, first: u32, out: &mut [f32]) {
         match self.strength {
             2 => self.coordinates_by_pairs::<A>(index, pattern, first, out),
             3 => self.coordinates_by_groups_at::<3, A>(index, pattern, first, out),
@@ -618,11 +605,12 @@ impl OrthogonalArray {
     fn coordinates_by_pairs<const A: u8>(
         &self,
         index: u32,
-        pattern: &ArrayPattern,
+        pattern: u32,
         first: u32,
         out: &mut [f32],
     ) {
         let q = self.q.get();
+        let pattern = &self.prepare(pattern);
         let [a0, a1] = self.row_digits::<2>(pattern.row_key, index);
         let raw_level = |dimension: u32| {
             // The pair after dimension q - 1 wraps round to dimension 0.
@@ -655,11 +643,12 @@ impl OrthogonalArray {
     fn coordinates_by_groups_at<const T: usize, const A: u8>(
         &self,
         index: u32,
-        pattern: &ArrayPattern,
+        pattern: u32,
         first: u32,
         out: &mut [f32],
     ) {
         let (q, t) = (self.q.get(), T as u32);
+        let pattern = &self.prepare(pattern);
         let row = self.row(pattern, index);
         let (mut group, mut levels) = (u32::MAX, [0; T]);
         for (dimension, x) in (first..).zip(out.iter_mut()) {
@@ -723,13 +712,14 @@ impl SamplerNd for OrthogonalArray {
 
     /// The pattern's row order and column choice once for all of `out`,
     /// and each group's raw levels once (see `sample`).
-    #[inline]
+    #[inline(always)]
     fn coordinates(&self, index: u32, pattern: u32, first: u32, out: &mut [f32]) {
-        let (index, pattern) = (reduce_index(index, self.n), self.prepare(pattern));
+        let index = reduce_index(index, self.n);
         if self.by_groups(first, out.len()) {
-            self.coordinates_by_groups(index, &pattern, first, out);
+            self.coordinates_by_groups(index, pattern, first, out);
             return;
         }
+        let pattern = self.prepare(pattern);
         let row = self.row(&pattern, index);
         for (dimension, x) in (first..).zip(out.iter_mut()) {
             *x = self.coordinate_of(index, row, &pattern, dimension);
