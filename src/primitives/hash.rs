@@ -194,19 +194,13 @@ pub(crate) mod salt {
     /// a bare pattern's permutation key.
     pub(crate) const GOLDEN_32: u32 = 0x9e37_79b9;
 
-    /// The N-dimensional sets' choices, per pattern or per dimension key
-    /// (`samplers::nd`): the Latin hypercube's stratum permutation and the
-    /// orthogonal array's level permutation.
-    pub(crate) const ND_STRATA: u32 = 0x3b9e_6d27;
-    /// The orthogonal array's sub-stratum permutation (multi-jittered
-    /// offsets).
+    /// The orthogonal array's sub-stratum permutation per level
+    /// (multi-jittered offsets).
     pub(crate) const ND_SUB_STRATA: u32 = 0x7a2f_c639;
     /// Xored into an orthogonal array's pattern before the mix that
     /// makes its hash, row order and choice of columns (fraction bits of
     /// sqrt(43)).
     pub(crate) const ND_PATTERN: u64 = 0x8eb4_4a87_6858_1511;
-    /// Where inside its stratum an N-dimensional coordinate lands.
-    pub(crate) const ND_JITTER: u32 = 0xd1c5_8a4b;
 
     /// Blue multi-jitter's per-pattern placement of its lattice: the
     /// offsets and shifts of the cells, and the mirror and transpose flags
@@ -253,9 +247,7 @@ mod tests {
             salt::SOBOL_W,
             salt::DRAW_ORDER,
             salt::GOLDEN_32,
-            salt::ND_STRATA,
             salt::ND_SUB_STRATA,
-            salt::ND_JITTER,
             salt::LATTICE_OFFSET_X,
             salt::LATTICE_OFFSET_Y,
             salt::LATTICE_SHIFT_X,
@@ -285,9 +277,8 @@ mod tests {
     /// would differ by a bare xor.
     #[test]
     fn derived_key_salts_differ_in_their_top_five_bits() {
-        let groups: [&[u32]; 3] = [
+        let groups: [&[u32]; 2] = [
             &[salt::ORDER, salt::SHUFFLE_X, salt::SHUFFLE_Y],
-            &[salt::ND_STRATA, salt::ND_SUB_STRATA],
             &[
                 salt::LATTICE_OFFSET_X,
                 salt::LATTICE_OFFSET_Y,

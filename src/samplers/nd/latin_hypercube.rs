@@ -1,8 +1,6 @@
-use super::{check_dimensions, debug_check_dimension, dimension_key, reduce_index};
+use super::{check_dimensions, debug_check_dimension, reduce_index};
 use crate::error::Error;
-use crate::primitives::{
-    InvariantDivisor, MAX_STRATA, Permutation, derived_key, hash_u32, rand_u32, salt,
-};
+use crate::primitives::{InvariantDivisor, MAX_STRATA, Permutation, hash_u32, mix64};
 use crate::traits::{SamplerNd, check_nd_out};
 
 /// A Latin hypercube of `n` points in `dimensions` dimensions: every 1D
@@ -31,14 +29,16 @@ use crate::traits::{SamplerNd, check_nd_out};
 ///
 /// # Cost
 ///
-/// Per coordinate: one [`hash_combine`](crate::primitives::hash_combine)
-/// for the dimension's key, one permutation of `n` (its setup and one
-/// application: an exact shuffle for `n <= 8`, else four or five hash
-/// rounds times the expected cycle walk, under 2), one
-/// [`rand_u32`](crate::primitives::rand_u32) and a fixed-point stratum
-/// conversion by a stored reciprocal (no division).
-/// [`sample`](SamplerNd::sample) hashes the pattern once per point instead
-/// of once per coordinate.
+/// Per coordinate: one [`mix64`](crate::primitives::mix64) of the
+/// pattern's hash and the dimension (the permutation's key and the
+/// jitter's), one permutation of `n` (its setup and one application: an
+/// exact shuffle for `n <= 8`, else four or five hash rounds times the
+/// expected cycle walk, under 2), one
+/// [`hash_u32`](crate::primitives::hash_u32) of the index for the jitter
+/// and a fixed-point stratum conversion by a stored reciprocal (no
+/// division). [`sample`](SamplerNd::sample) and
+/// [`coordinates`](SamplerNd::coordinates) hash the pattern once per
+/// call instead of once per coordinate.
 ///
 /// # Limits
 ///
@@ -130,14 +130,15 @@ impl LatinHypercube {
     }
 
     /// Coordinate `dimension` of sample `index` (already reduced) of the
-    /// pattern whose hash is `pattern_hash`.
+    /// pattern whose hash is `pattern_hash`: one [`mix64`] of the hash and
+    /// the dimension keys the stratum permutation (its low half) and the
+    /// jitter (its high half).
     #[inline(always)]
     fn coordinate_of(&self, index: u32, pattern_hash: u32, dimension: u32) -> f32 {
         debug_check_dimension(dimension, self.dimensions);
-        let key = dimension_key(pattern_hash, dimension);
-        let stratum =
-            Permutation::new(self.n.get(), derived_key(key, salt::ND_STRATA)).apply(index);
-        let bits = rand_u32(index, key ^ salt::ND_JITTER);
+        let key = mix64((u64::from(pattern_hash) << 32) | u64::from(dimension));
+        let stratum = Permutation::new(self.n.get(), key as u32).apply(index);
+        let bits = hash_u32(index ^ (key >> 32) as u32);
         self.n.stratum_to_unit_f32(stratum, bits)
     }
 }
@@ -158,13 +159,19 @@ impl SamplerNd for LatinHypercube {
         self.coordinate_of(reduce_index(index, self.n), hash_u32(pattern), dimension)
     }
 
+    /// The pattern hashed once for all of `out`.
+    #[inline(always)]
+    fn coordinates(&self, index: u32, pattern: u32, first: u32, out: &mut [f32]) {
+        let (index, pattern_hash) = (reduce_index(index, self.n), hash_u32(pattern));
+        for (dimension, x) in (first..).zip(out.iter_mut()) {
+            *x = self.coordinate_of(index, pattern_hash, dimension);
+        }
+    }
+
     #[track_caller]
     fn sample(&self, index: u32, pattern: u32, out: &mut [f32]) {
         let out = check_nd_out(out, self.dimensions);
-        let (index, pattern_hash) = (reduce_index(index, self.n), hash_u32(pattern));
-        for (dimension, x) in (0..).zip(out.iter_mut()) {
-            *x = self.coordinate_of(index, pattern_hash, dimension);
-        }
+        self.coordinates(index, pattern, 0, out);
     }
 }
 

@@ -20,16 +20,8 @@ pub use latin_hypercube::LatinHypercube;
 pub use orthogonal_array::{OrthogonalArray, OrthogonalArrayOffset};
 
 use crate::error::Error;
-use crate::primitives::{InvariantDivisor, hash_combine};
+use crate::primitives::InvariantDivisor;
 use crate::traits::debug_check_index;
-
-/// The key of dimension `dimension` of the pattern whose hash is
-/// `pattern_hash`: every choice made for that dimension alone is derived
-/// from it, so dimensions are as independent as two patterns.
-#[inline(always)]
-const fn dimension_key(pattern_hash: u32, dimension: u32) -> u32 {
-    hash_combine(pattern_hash, dimension)
-}
 
 /// `index`, checked against the set size in debug builds and reduced
 /// modulo it in release builds.
