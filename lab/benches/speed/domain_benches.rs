@@ -20,7 +20,7 @@
 //!   draws per sample.
 //!
 //! Back ends: sobol, pmj02, random, jittered, cmj, blue-multi-jittered
-//! (padded), zsobol, blue-noise, orthogonal and latin-hypercube. The unit runs first and last
+//! (padded), zsobol, blue-noise, orthogonal, latin-hypercube and faure. The unit runs first and last
 //! (`unit/2d-again`); ratios divide by the faster. The table goes to
 //! stdout and `<target>/domain-ratios.md`.
 //! `cargo bench -p wellspread-lab --bench speed -- domain` runs only this group.
@@ -33,7 +33,7 @@ use criterion::{BenchmarkId, Criterion, criterion_group};
 use rand::Rng;
 use wellspread::glam::Vec2;
 use wellspread::{
-    AnyPixelSampler, BlueMultiJittered, BlueNoise, CorrelatedMultiJittered, Jittered,
+    AnyPixelSampler, BlueMultiJittered, BlueNoise, CorrelatedMultiJittered, Faure4D, Jittered,
     LatinHypercube, OrthogonalArray, Padded, PaddedNd, PixelSampler, PixelSamplerKind, Pmj02,
     Random, Sobol, ZSobol,
 };
@@ -183,6 +183,7 @@ const BACK_ENDS: &[(&str, Option<f64>, Option<f64>)] = &[
     ("blue-noise", Some(1.3), None),
     ("orthogonal", None, None),
     ("latin-hypercube", None, None),
+    ("faure", None, None),
 ];
 
 /// The `AnyPixelSampler` of a back end's name.
@@ -284,6 +285,13 @@ fn domain(c: &mut Criterion) {
             0,
         ),
         any("latin-hypercube"),
+        &inputs,
+    );
+    back_end(
+        &mut group,
+        "faure",
+        PaddedNd::new(Faure4D::new(SPP).unwrap(), 0),
+        any("faure"),
         &inputs,
     );
     group.bench_function(BenchmarkId::new("unit", "2d-again"), unit_2d);
