@@ -29,12 +29,12 @@ use crate::traits::{SamplerNd, check_nd_out};
 ///
 /// # Cost
 ///
-/// Per coordinate: one [`mix64`](crate::primitives::mix64) of the
+/// Per coordinate: one [`mix64`] of the
 /// pattern's hash and the dimension (the permutation's key and the
 /// jitter's), one permutation of `n` (its setup and one application: an
 /// exact shuffle for `n <= 8`, else four or five hash rounds times the
 /// expected cycle walk, under 2), one
-/// [`hash_u32`](crate::primitives::hash_u32) of the index for the jitter
+/// [`hash_u32`] of the index for the jitter
 /// and a fixed-point stratum conversion by a stored reciprocal (no
 /// division). [`sample`](SamplerNd::sample) and
 /// [`coordinates`](SamplerNd::coordinates) hash the pattern once per

@@ -49,8 +49,9 @@ pub enum OrthogonalArrayOffset {
 /// Each pattern is a new random array: the rows are taken in a keyed
 /// nonlinear order (a Feistel network on the row's base-`q` digits),
 /// every dimension permutes its column's levels, and the dimensions take
-/// consecutive columns (cyclically) from a random first one. Coordinate `j` of a sample is then the permuted level's stratum
-/// `[level / q, (level + 1) / q)`, with the [`OrthogonalArrayOffset`]
+/// consecutive columns (cyclically) from a random first one. Coordinate
+/// `j` of a sample is then the permuted level's stratum `[level / q,
+/// (level + 1) / q)`, with the [`OrthogonalArrayOffset`]
 /// deciding where inside it: the multi-jittered offsets split that stratum
 /// into `q^(t - 1)` sub-strata and tell the points sharing the level apart
 /// by the strata of `t - 1` partner dimensions (dimensions `2k` and `2k +
@@ -83,7 +84,7 @@ pub enum OrthogonalArrayOffset {
 ///
 /// # Cost
 ///
-/// Per pattern: one [`mix64`](crate::primitives::mix64) for the
+/// Per pattern: one [`mix64`] for the
 /// pattern's hash, the row order's key and the first column. Per sample:
 /// the row, `t` Feistel steps of about fifteen operations on its digits
 /// (no cycle walk). Per coordinate: one `mix64` of the pattern's hash and
@@ -92,7 +93,7 @@ pub enum OrthogonalArrayOffset {
 /// sub-strata above) and the jitter's stream; the row's polynomial
 /// evaluated in its own column (and, for the multi-jittered offsets, in
 /// its `t - 1` partners'), each `t - 1` field products and sums; a
-/// [`hash_u32`](crate::primitives::hash_u32) of the index for the jitter
+/// [`hash_u32`] of the index for the jitter
 /// and a fixed-point stratum conversion. A field product is a multiply and a
 /// remainder for a prime `q`, three table lookups for `q = 2^k` up to 256
 /// (3 KiB of logarithms, built at compile time), `k` shift-and-xor steps
@@ -600,7 +601,10 @@ impl OrthogonalArray {
     /// 2, written out for its one partner: the pair `2k, 2k + 1` shares
     /// the row's two raw levels, `a_0 + a_1 c` (or `a_1` in column `q`),
     /// and each member takes its sub-stratum from the other's level. The
-    /// values of `coordinates_by_groups_at::<2, A>`.
+    /// raw levels are [`raw_level_at`](Self::raw_level_at)'s, written on
+    /// the row's digits so the row is not split again; the values are
+    /// [`coordinate_of`](Self::coordinate_of)'s (tests/nd_samplers.rs
+    /// compares the two for every array size).
     #[inline(always)]
     fn coordinates_by_pairs<const A: u8>(
         &self,
