@@ -123,9 +123,9 @@ const fn is_irreducible(p: u32, k: u32, low: u32) -> bool {
     true
 }
 
-/// The prime fields GF(p): sums and products modulo `p`.
+/// The odd prime fields GF(p): sums and products modulo `p`.
 pub(crate) const PRIME: u8 = 0;
-/// GF(2^k), `2 <= k <=` [`TABLED_DEGREE`]: sums by xor, products by
+/// GF(2^k), `1 <= k <=` [`TABLED_DEGREE`]: sums by xor, products by
 /// [`BINARY_TABLES`].
 pub(crate) const TABLED: u8 = 1;
 /// GF(2^k), `k >` [`TABLED_DEGREE`]: sums by xor, products by shift and
@@ -322,14 +322,18 @@ impl Field {
     /// this field's sums and products.
     #[inline(always)]
     pub(crate) const fn arithmetic(self) -> u8 {
-        if self.k == 1 {
+        // Characteristic 2 first: two tests pick the tabled fields, the
+        // arrays' most common kind (GF(2) is one of them).
+        if self.divisor.get() == 2 {
+            if self.k <= TABLED_DEGREE {
+                TABLED
+            } else {
+                BINARY
+            }
+        } else if self.k == 1 {
             PRIME
-        } else if self.divisor.get() != 2 {
-            DIGITS
-        } else if self.k <= TABLED_DEGREE {
-            TABLED
         } else {
-            BINARY
+            DIGITS
         }
     }
 

@@ -397,11 +397,7 @@ impl OrthogonalArray {
     #[inline(always)]
     fn row_digits<const T: usize>(&self, key: u32, index: u32) -> [u32; T] {
         let q = self.q.get();
-        let mut digits = [0; T];
-        let mut rest = index;
-        for digit in &mut digits {
-            (rest, *digit) = self.q.div_rem(rest);
-        }
+        let mut digits = self.digits::<T>(index);
         for j in 0..T {
             let mut others = 0;
             for (k, &digit) in digits.iter().enumerate() {
@@ -418,16 +414,23 @@ impl OrthogonalArray {
         digits
     }
 
-    /// `f(x)` for the row's polynomial `f` (its base-`q` digits are the
-    /// coefficients, lowest first), by Horner's rule in GF(q), at strength
-    /// `T` (its loops unrolled) in a field whose arithmetic is `A`.
+    /// The `T` base-`q` digits of `value` (`< q^T`), lowest first.
     #[inline(always)]
-    fn evaluate_at<const T: usize, const A: u8>(&self, row: u32, x: u32) -> u32 {
+    fn digits<const T: usize>(&self, value: u32) -> [u32; T] {
         let mut digits = [0; T];
-        let mut rest = row;
+        let mut rest = value;
         for digit in &mut digits {
             (rest, *digit) = self.q.div_rem(rest);
         }
+        digits
+    }
+
+    /// `f(x)` for the row's polynomial `f`, whose coefficients are the
+    /// row's base-`q` digits (lowest first), by Horner's rule in GF(q),
+    /// at strength `T` (its loops unrolled) in a field whose arithmetic
+    /// is `A`.
+    #[inline(always)]
+    fn evaluate_at<const T: usize, const A: u8>(&self, digits: [u32; T], x: u32) -> u32 {
         let mut value = digits[T - 1];
         for &digit in digits[..T - 1].iter().rev() {
             value = self
@@ -449,24 +452,25 @@ impl OrthogonalArray {
     }
 
     /// The level of row `row` in column `column`, before the level
-    /// permutation: `f(column)`, or the leading coefficient in column `q`.
+    /// permutation ([`raw_level_at`](Self::raw_level_at) on its digits).
     #[inline(always)]
     fn raw_level(&self, row: u32, column: u32) -> u32 {
         match self.strength {
-            2 => self.raw_level_at::<2, ANY>(row, column),
-            3 => self.raw_level_at::<3, ANY>(row, column),
-            _ => self.raw_level_at::<4, ANY>(row, column),
+            2 => self.raw_level_at::<2, ANY>(self.digits(row), column),
+            3 => self.raw_level_at::<3, ANY>(self.digits(row), column),
+            _ => self.raw_level_at::<4, ANY>(self.digits(row), column),
         }
     }
 
-    /// [`raw_level`](Self::raw_level) at strength `T`, in a field whose
-    /// arithmetic is `A`.
+    /// The raw level in column `column` of the row whose base-`q` digits
+    /// are `digits`, at strength `T`, in a field whose arithmetic is `A`:
+    /// `f(column)`, or the leading coefficient in column `q`.
     #[inline(always)]
-    fn raw_level_at<const T: usize, const A: u8>(&self, row: u32, column: u32) -> u32 {
+    fn raw_level_at<const T: usize, const A: u8>(&self, digits: [u32; T], column: u32) -> u32 {
         if column == self.q.get() {
-            self.sub.div_rem(row).0
+            digits[T - 1]
         } else {
-            self.evaluate_at::<T, A>(row, column)
+            self.evaluate_at::<T, A>(digits, column)
         }
     }
 
@@ -599,10 +603,8 @@ impl OrthogonalArray {
 
     /// [`coordinates_by_groups`](Self::coordinates_by_groups) at strength
     /// 2, written out for its one partner: the pair `2k, 2k + 1` shares
-    /// the row's two raw levels, `a_0 + a_1 c` (or `a_1` in column `q`),
-    /// and each member takes its sub-stratum from the other's level. The
-    /// raw levels are [`raw_level_at`](Self::raw_level_at)'s, written on
-    /// the row's digits so the row is not split again; the values are
+    /// the row's two raw levels and each member takes its sub-stratum
+    /// from the other's level. The values are
     /// [`coordinate_of`](Self::coordinate_of)'s (tests/nd_samplers.rs
     /// compares the two for every array size).
     #[inline(always)]
@@ -615,17 +617,11 @@ impl OrthogonalArray {
     ) {
         let q = self.q.get();
         let pattern = &self.prepare(pattern);
-        let [a0, a1] = self.row_digits::<2>(pattern.row_key, index);
+        let digits = self.row_digits::<2>(pattern.row_key, index);
         let raw_level = |dimension: u32| {
             // The pair after dimension q - 1 wraps round to dimension 0.
             let dimension = if dimension > q { 0 } else { dimension };
-            let column = self.column(pattern, dimension);
-            if column == q {
-                a1
-            } else {
-                self.field
-                    .add_as::<A>(self.field.mul_as::<A>(a1, column), a0)
-            }
+            self.raw_level_at::<2, A>(digits, self.column(pattern, dimension))
         };
         let (mut pair, mut levels) = (u32::MAX, [0; 2]);
         for (dimension, x) in (first..).zip(out.iter_mut()) {
@@ -653,7 +649,7 @@ impl OrthogonalArray {
     ) {
         let (q, t) = (self.q.get(), T as u32);
         let pattern = &self.prepare(pattern);
-        let row = self.row(pattern, index);
+        let digits = self.row_digits::<T>(pattern.row_key, index);
         let (mut group, mut levels) = (u32::MAX, [0; T]);
         for (dimension, x) in (first..).zip(out.iter_mut()) {
             let base = dimension - dimension % t;
@@ -661,7 +657,7 @@ impl OrthogonalArray {
                 group = base;
                 for (k, level) in (0..t).zip(levels.iter_mut()) {
                     let column = self.column(pattern, (base + k) % (q + 1));
-                    *level = self.raw_level_at::<T, A>(row, column);
+                    *level = self.raw_level_at::<T, A>(digits, column);
                 }
             }
             let k = dimension - base;
