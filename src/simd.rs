@@ -77,7 +77,7 @@ impl Isa {
 
     /// The widest instruction set this CPU runs (detected once by `std`
     /// and cached); [`Isa::Portable`] without `simd` or `std`, or off x86.
-    /// In the crate's unit tests, the set [`with_isa`] forces on this
+    /// In the crate's unit tests, the set `with_isa` forces on this
     /// thread, if any: the one test seam, so that every `fill` and
     /// `fill_from` is tested on every path through its ordinary call.
     #[inline]

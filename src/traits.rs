@@ -389,7 +389,7 @@ pub const fn second_stream(stream: u64) -> u64 {
 /// lands in its own stratum), at a hashed position inside it (`jitter`)
 /// or at its centre; key and jitter come from the two halves of `stream`.
 /// Exact on the f32 values for `n <= 2^24`
-/// ([`stratum_to_unit_f32`](crate::primitives::stratum_to_unit_f32)); an
+/// ([`stratum_to_unit_f32`]); an
 /// index at or past `n` is reduced modulo `n`.
 #[inline]
 #[must_use]

@@ -83,7 +83,7 @@ const INDEX_BITS: u32 = 32;
 /// # Cost
 ///
 /// `start`: the Morton code of the pixel. Each draw: one
-/// [`mix64`](crate::primitives::mix64), the block's nested scramble, a
+/// [`mix64`], the block's nested scramble, a
 /// [`prefix_shuffle`] and a [`Sobol`](crate::Sobol) point.
 ///
 /// # Limits

@@ -35,7 +35,7 @@ use crate::traits::{Sampler2D, check_fill_len, debug_check_index};
 ///
 /// # Cost
 ///
-/// One pattern hash (once per [`fill`](Sampler2D::fill)), one [`rand_u32`](crate::primitives::rand_u32)
+/// One pattern hash (once per [`fill`](Sampler2D::fill)), one [`rand_u32`]
 /// and one Owen-scramble hash, one bit reversal and one fixed-point stratum
 /// conversion per sample.
 ///

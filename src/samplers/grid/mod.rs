@@ -140,7 +140,7 @@ impl Grid {
     /// The order in which pattern `pattern_hash`'s indices visit the
     /// cells: a permutation of `0..n` keyed by
     /// `derived_key(pattern_hash, salt::ORDER)`. Every grid sampler but
-    /// [`NRooks`](crate::NRooks) (which has no cells to order) shuffles its
+    /// [`NRooks`] (which has no cells to order) shuffles its
     /// indices with it, so that padded dimension pairs sharing an index are
     /// not correlated.
     #[inline(always)]

@@ -595,6 +595,33 @@ mod tests {
         }
     }
 
+    /// Which arithmetic serves which field: tables for GF(2^k) up to
+    /// degree 8 (GF(2) among them, whose sums and products are those
+    /// modulo 2), shift and xor above, modular arithmetic for the odd
+    /// primes and digits for their powers.
+    #[test]
+    fn each_field_gets_its_arithmetic() {
+        for (q, arithmetic) in [
+            (2, TABLED),
+            (4, TABLED),
+            (256, TABLED),
+            (512, BINARY),
+            (3, PRIME),
+            (251, PRIME),
+            (9, DIGITS),
+            (243, DIGITS),
+        ] {
+            assert_eq!(Field::new(q).unwrap().arithmetic(), arithmetic, "GF({q})");
+        }
+        let f = Field::new(2).unwrap();
+        for a in 0..2 {
+            for b in 0..2 {
+                assert_eq!(f.add_as::<TABLED>(a, b), (a + b) % 2, "{a} + {b}");
+                assert_eq!(f.mul_as::<TABLED>(a, b), a * b, "{a} {b}");
+            }
+        }
+    }
+
     /// The logarithm tables give the shift-and-xor product for every pair
     /// of elements of every GF(2^k) they serve.
     #[test]

@@ -142,7 +142,7 @@ const fn columns_of(mut s: u32) -> [u32; 4] {
 ///   samples every pair but (0, 3) fills the `2 x 2` grid.
 /// - Each pattern is an independent Owen scramble of all four dimensions
 ///   and an index shuffle inside dyadic blocks
-///   ([`prefix_shuffle`](crate::primitives::prefix_shuffle)), which keeps
+///   ([`prefix_shuffle`]), which keeps
 ///   every power-of-two prefix the same set of points; between powers of
 ///   two a prefix ends in a random subset of its block.
 /// - Against [`Sobol4D`](crate::Sobol4D), a (3,4)-sequence in base 2: its
@@ -152,7 +152,7 @@ const fn columns_of(mut s: u32) -> [u32; 4] {
 ///
 /// # Cost
 ///
-/// One [`mix64`](crate::primitives::mix64) and one index shuffle per
+/// One [`mix64`] and one index shuffle per
 /// pattern and index, one 16-byte xor per set bit of the shuffled index,
 /// then one Owen scramble per coordinate:
 /// [`coordinates`](SamplerNd::coordinates) does the shared part once.

@@ -48,7 +48,7 @@ const BASE3_STRATA: u32 = 14_348_907;
 /// One Owen-scramble hash for x; for y, fifteen rounds of a divide by 3 (a
 /// multiply) and one independent [`hash_u32`], then two more hashes for the
 /// low digits and a fixed-point stratum conversion: about three times
-/// [`Sobol`](crate::Sobol)'s operations.
+/// [`Sobol`]'s operations.
 ///
 /// # Limits
 ///
@@ -56,13 +56,13 @@ const BASE3_STRATA: u32 = 14_348_907;
 /// beyond the fifteenth (indices from `3^15 = 14_348_907` on) only select
 /// which jitter a point gets. Coordinates are multiples of `2^-24`.
 ///
-/// Unlike [`Sobol`](crate::Sobol) the index is not shuffled: no shuffle
+/// Unlike [`Sobol`] the index is not shuffled: no shuffle
 /// keeps every run of `2^a 3^b` indices a run. Two patterns therefore give
 /// independently scrambled copies of the same points in the same order, so
 /// two dimension pairs sampled at the same `index` are correlated in their
 /// leading digits (their first base-2 digits agree or disagree for every
 /// `index` at once). Use Halton for one pair per pixel, and
-/// [`Sobol`](crate::Sobol) or [`Pmj02`](crate::Pmj02) for padded
+/// [`Sobol`] or [`Pmj02`](crate::Pmj02) for padded
 /// dimension pairs.
 ///
 /// # Examples

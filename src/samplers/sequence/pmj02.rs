@@ -30,7 +30,7 @@ use crate::traits::{Sampler2D, Sequence2D};
 ///   few masked xor-shift steps, with no loop and no table; the derivation
 ///   is on `stirling_x` in the source.
 /// - The index is shuffled and the coordinates Owen-scrambled exactly as in
-///   [`Sobol`](crate::Sobol) (Burley 2020), so dimension pairs decorrelate
+///   [`Sobol`] (Burley 2020), so dimension pairs decorrelate
 ///   the same way: hash the pair into the pattern with
 ///   [`pattern_seed`](crate::primitives::pattern_seed).
 ///

@@ -1,7 +1,7 @@
 //! Sobol' dimensions 2 and 3, so that a pixel sample can draw one point of
 //! a 4D Owen-scrambled Sobol' set (dimensions 0 and 1 are the ones
-//! [`Sobol`](crate::Sobol) uses: the identity and the Pascal matrix), and
-//! that set as a [`SamplerNd`](crate::SamplerNd), [`Sobol4D`].
+//! [`Sobol`] uses: the identity and the Pascal matrix), and
+//! that set as a [`SamplerNd`], [`Sobol4D`].
 //!
 //! # Direction numbers
 //!
@@ -155,12 +155,12 @@ pub(crate) const fn dimensions_2_3_reversed(index: u32) -> (u32, u32) {
 
 /// The 4D Owen-scrambled Sobol' sequence as a [`SamplerNd`]: the set a
 /// [`Domain`](crate::Domain)'s `next_4d` draws from for
-/// [`Sobol`](crate::Sobol) and [`Pmj02`](crate::Pmj02), one pattern at a
+/// [`Sobol`] and [`Pmj02`](crate::Pmj02), one pattern at a
 /// time.
 ///
 /// # Properties
 ///
-/// - A sequence, like [`Sobol`](crate::Sobol): every `u32` index is valid,
+/// - A sequence, like [`Sobol`]: every `u32` index is valid,
 ///   and every power-of-two prefix `0..2^m`, and every dyadic block
 ///   `2^m..2^(m+1)`, is a (3,m,4)-net for `m >= 3`: `2^3` points in every
 ///   elementary box of volume `2^(3-m)` (see the module docs for the
@@ -173,13 +173,13 @@ pub(crate) const fn dimensions_2_3_reversed(index: u32) -> (u32, u32) {
 ///   ([`prefix_shuffle`](crate::primitives::prefix_shuffle)), which keeps
 ///   every prefix the same set of points.
 /// - Point `index` of pattern `pattern` is
-///   [`DomainSampler::domain_4d`](crate::implement::DomainSampler::domain_4d) of
-///   [`Sobol`](crate::Sobol) at the stream `mix64(pattern ^ salt)`: one
+///   [`DomainSampler::domain_4d`] of
+///   [`Sobol`] at the stream `mix64(pattern ^ salt)`: one
 ///   formula for both.
 ///
 /// # Cost
 ///
-/// One [`mix64`](crate::primitives::mix64), the index shuffle, the four
+/// One [`mix64`], the index shuffle, the four
 /// generator matrices (a 1 KiB table for dimensions 2 and 3) and four Owen
 /// scrambles per point; [`sample`](SamplerNd::sample) computes the point
 /// once, [`coordinate`](SamplerNd::coordinate) once per coordinate.
