@@ -95,7 +95,7 @@ pub enum OrthogonalArrayOffset {
 /// its `t - 1` partners'), each `t - 1` field products and sums; a
 /// [`hash_u32`] of the index for the jitter
 /// and a fixed-point stratum conversion. A field product is a multiply and a
-/// remainder for a prime `q`, three table lookups for `q = 2^k` up to 256
+/// remainder for an odd prime `q`, three table lookups for `q = 2^k` up to 256
 /// (3 KiB of logarithms, built at compile time), `k` shift-and-xor steps
 /// for larger powers of two and a few dozen digit operations for other
 /// prime powers. [`sample`](SamplerNd::sample) and
