@@ -536,7 +536,8 @@ impl<'a> SceneJob<'a> {
         let mut top_squares = 0.0;
         let mut off_light_squares = 0.0;
         let mut spectrum = vec![0.0; SPECTRUM_BINS];
-        let mut first: Option<(Image, f64, f64)> = None;
+        let mut first: Option<(Image, f64)> = None;
+        let mut fastest = f64::INFINITY;
         let frames = options.frames_for(self.kind);
         for (offset, frame) in options.frame_range(self.kind).enumerate() {
             let frame_sampler = match FrameSampler::new(sampler, spp, (width, height), frame) {
@@ -576,12 +577,11 @@ impl<'a> SceneJob<'a> {
                     self.tracing,
                 ),
             };
-            // Only the first frame is timed; the others only add to the errors.
-            let (image, seconds) = if offset == 0 {
-                timed(draw)
-            } else {
-                (draw(), 0.0)
-            };
+            // Every frame is timed and the row keeps the fastest: a row's
+            // frames do the same work, so the fastest is the one other work
+            // on the machine disturbed least.
+            let (image, seconds) = timed(draw);
+            fastest = fastest.min(seconds);
             let rmse = image.rmse(&self.reference);
             squares.0 += rmse * rmse;
             let top_pixels = (height.div_ceil(TOP_ROWS_DIVISOR) * width) as usize;
@@ -599,11 +599,12 @@ impl<'a> SceneJob<'a> {
                 *sum += p / f64::from(frames);
             }
             if offset == 0 {
-                first = Some((image, rmse, seconds));
+                first = Some((image, rmse));
             }
             self.progress.frame_done();
         }
-        let Some((image, first_rmse, seconds)) = first else {
+        let seconds = fastest;
+        let Some((image, first_rmse)) = first else {
             return Ok(None);
         };
         let path = self.dir.join(format!("{sampler}-{spp}spp.png"));

@@ -907,7 +907,7 @@ fn machine() -> String {
 fn docs_block(tables: &str, name: &str) -> String {
     let (begin, end) = docs_markers(name);
     format!(
-        "{begin}\n\nRegenerate with:\n\n```sh\n{}\n```\n\nMachine: {}. Times are the fastest of repeated renders of one frame; other work on the machine inflates them.\n{tables}\n{end}\n",
+        "{begin}\n\nRegenerate with:\n\n```sh\n{}\n```\n\nMachine: {}. Times are the fastest render of a row's frames (a frame under 10 ms is repeated for 10 ms); other work on the machine inflates them.\n{tables}\n{end}\n",
         command_line(),
         machine()
     )
