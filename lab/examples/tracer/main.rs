@@ -578,8 +578,8 @@ impl<'a> SceneJob<'a> {
                 ),
             };
             // Every frame is timed and the row keeps the fastest: a row's
-            // frames do the same work, so the fastest is the one other work
-            // on the machine disturbed least.
+            // frames do about the same work, so the fastest is the one other
+            // work on the machine disturbed least.
             let (image, seconds) = timed(draw);
             fastest = fastest.min(seconds);
             let rmse = image.rmse(&self.reference);
