@@ -603,7 +603,6 @@ impl<'a> SceneJob<'a> {
             }
             self.progress.frame_done();
         }
-        let seconds = fastest;
         let Some((image, first_rmse)) = first else {
             return Ok(None);
         };
@@ -638,7 +637,7 @@ impl<'a> SceneJob<'a> {
             off_light_rmse: (off_light_squares / count).sqrt(),
             blurred_rmse: (squares.1 / count).sqrt(),
             low_power: low_frequency_power(&spectrum),
-            seconds,
+            seconds: fastest,
             frames,
         };
         Ok(Some(Frames {

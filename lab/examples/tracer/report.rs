@@ -49,7 +49,8 @@ pub struct Row {
     /// Mean error power below 1/16 cycle per pixel, averaged over the
     /// frames ([`low_frequency_power`]).
     pub low_power: f64,
-    /// Fastest time for the first frame.
+    /// The fastest of the frames' times, in seconds (a frame under 10 ms
+    /// timed as its fastest of repeated renders).
     pub seconds: f64,
     pub frames: u32,
 }
