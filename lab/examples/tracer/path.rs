@@ -24,16 +24,23 @@
 //! `rand_pcg::Pcg32` per pixel sample and frame, and the same path code
 //! draws every number from it in call order. [`render`] picks the source
 //! once per frame ([`FrameSampler`]); `render_cornell` is generic over it,
-//! so neither side pays for the other in its draws.
+//! so neither side pays for the other in its draws, and a library sampler's
+//! frame runs through [`AnyPixelSampler::visit`], compiled for the concrete
+//! sampler, as a renderer that picks its sampler at run time would: its
+//! draws cost what the concrete type's do, not the enum's dispatch per
+//! draw (`lab/frame_cost.sh` counts a frame's instructions).
 
 use rand::{Rng as _, SeedableRng as _};
 use rand_pcg::Pcg32;
 use wellspread::glam::{Vec2, Vec4};
-use wellspread::{AnyPixelSampler, Domain, PixelSampler, PixelSamplerKind, SamplerKind};
+use wellspread::{
+    AnyPixelSampler, Domain, PixelSampler, PixelSamplerKind, PixelSamplerVisitor, SamplerKind,
+};
 
 use crate::cornell::{Light, PathSamples, SampleSource, Tracing, render_cornell};
 use crate::joint_sobol::JointSobol;
 use crate::render::{FilmLens, Image, TracerSampler};
+use crate::scenes::Rgb;
 
 /// A [`SampleSource`] over a pixel sampler's domains.
 #[derive(Clone, Copy, Debug)]
@@ -225,12 +232,16 @@ pub fn render(
     film_lens: FilmLens,
     tracing: Tracing,
 ) -> Image {
-    // Borrowed: each path's domain is 32 bytes (owned, 112).
     let pixels = match sampler {
-        FrameSampler::Pixel(sampler) => {
-            let source = Domains::frame(&sampler, film_lens);
-            render_cornell(width, height, spp, &source, tracing)
-        }
+        // One dispatch per frame: the frame's loop is compiled for the
+        // concrete sampler, each path's domain borrows it (32 bytes).
+        FrameSampler::Pixel(sampler) => sampler.visit(CornellFrame {
+            width,
+            height,
+            spp,
+            film_lens,
+            tracing,
+        }),
         FrameSampler::Pcg32(source) => render_cornell(width, height, spp, &source, tracing),
         FrameSampler::JointSobol(sampler) => {
             let source = Domains::frame(&sampler, film_lens);
@@ -241,6 +252,26 @@ pub fn render(
         width,
         height,
         pixels,
+    }
+}
+
+/// A frame of the Cornell box as [`AnyPixelSampler::visit`] runs it: on
+/// the concrete pixel sampler, so the draws cost what the concrete type's
+/// do, with the same values as through the enum.
+struct CornellFrame {
+    width: u32,
+    height: u32,
+    spp: u32,
+    film_lens: FilmLens,
+    tracing: Tracing,
+}
+
+impl PixelSamplerVisitor for CornellFrame {
+    type Output = Vec<Rgb>;
+
+    fn visit<S: PixelSampler + Copy>(self, sampler: &S) -> Vec<Rgb> {
+        let source = Domains::frame(sampler, self.film_lens);
+        render_cornell(self.width, self.height, self.spp, &source, self.tracing)
     }
 }
 
@@ -358,6 +389,48 @@ mod tests {
         }
         // The depth-1 reference is cached under a name of its own.
         assert_ne!(fingerprint(1), fingerprint(MAX_BOUNCES));
+    }
+
+    /// `render` runs a library sampler's frame through `visit`, on the
+    /// concrete type; its pixels are bit for bit those of the frame drawn
+    /// through the enum's domains, for every pixel sampler and both layouts.
+    #[test]
+    fn a_visited_frame_is_the_frame_through_the_enum() {
+        let (width, height, spp) = (12, 10, 4);
+        let mut compared = 0;
+        for sampler in TracerSampler::all() {
+            let Ok(FrameSampler::Pixel(any)) = FrameSampler::new(sampler, spp, (width, height), 3)
+            else {
+                continue;
+            };
+            for draws in Draws::ALL {
+                let tracing = Tracing {
+                    light: Light::SolidAngle,
+                    draws,
+                    max_depth: MAX_BOUNCES,
+                };
+                let film_lens = sampler.film_lens();
+                let visited = render(
+                    width,
+                    height,
+                    spp,
+                    FrameSampler::Pixel(any),
+                    film_lens,
+                    tracing,
+                );
+                let source = Domains::frame(&any, film_lens);
+                let through_enum = render_cornell(width, height, spp, &source, tracing);
+                let what = format!("{sampler} {draws}");
+                assert_eq!(
+                    pixel_bits(&visited.pixels),
+                    pixel_bits(&through_enum),
+                    "{what}"
+                );
+            }
+            compared += 1;
+        }
+        // Every pixel kind, and sobol-pairs.
+        assert_eq!(compared, PixelSamplerKind::all().count() + 1);
     }
 
     /// A pcg32 path is one generator in call order: film and lens, then
