@@ -15,8 +15,6 @@ cd "$(dirname "$0")/.."
 command -v valgrind >/dev/null || { echo "frame_cost.sh: needs valgrind" >&2; exit 2; }
 cargo build --quiet --release -p wellspread-lab --example tracer
 bin="${CARGO_TARGET_DIR:-target}/release/examples/tracer"
-# Makes (or finds) the reference natively: under callgrind it would take hours.
-"$bin" --scene cornell --sampler pcg32 --spp 16 --frames 1 >/dev/null
 count() {
     valgrind --tool=callgrind --callgrind-out-file=/dev/null \
         "$bin" --scene cornell --sampler "$1" --spp 16 --frames "$2" 2>&1 |
@@ -27,6 +25,10 @@ if [ $# -eq 0 ]; then
     set -- random sobol pmj02 zsobol blue-noise jittered correlated-multi-jittered \
         blue-multi-jittered orthogonal
 fi
+# One native frame of each first: it makes (or finds) the reference, which
+# under callgrind would take hours, and a name the tracer does not know
+# stops here with its one-line message and exit status 2.
+"$bin" --scene cornell --sampler "pcg32$(printf ',%s' "$@")" --spp 16 --frames 1 >/dev/null
 base=$(frame pcg32)
 echo "Instructions per cornell 128x128 frame at 16 spp (callgrind), pcg32: $base ($(( base / (128 * 128 * 16) )) a pixel sample)."
 echo
