@@ -12,15 +12,10 @@
 # Domain<&AnyPixelSampler>, "owned" the owned Domain<AnyPixelSampler>.
 set -eu
 cd "$(dirname "$0")/.."
-command -v valgrind >/dev/null || { echo "draw_cost.sh: needs valgrind" >&2; exit 2; }
-cargo build --quiet --release -p wellspread-lab --example draw_cost
-bin="${CARGO_TARGET_DIR:-target}/release/examples/draw_cost"
-count() {
-    valgrind --tool=callgrind --callgrind-out-file=/dev/null "$bin" "$@" 2>&1 |
-        sed -n 's/.*Collected : \([0-9]*\).*/\1/p'
-}
-loop=$(count sobol loop)
-per() { echo $(( ($(count "$1" "$2") - loop) / 65536 )); }
+. lab/callgrind.sh
+callgrind_example draw_cost
+loop=$(collected sobol loop)
+per() { echo $(( ($(collected "$1" "$2") - loop) / 65536 )); }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2fx", a / b }'; }
 unit2=$(per unit 2d)
 unit9=$(per unit path)

@@ -12,14 +12,9 @@
 # report drop out. About 25 seconds a sampler; needs valgrind.
 set -eu
 cd "$(dirname "$0")/.."
-command -v valgrind >/dev/null || { echo "frame_cost.sh: needs valgrind" >&2; exit 2; }
-cargo build --quiet --release -p wellspread-lab --example tracer
-bin="${CARGO_TARGET_DIR:-target}/release/examples/tracer"
-count() {
-    valgrind --tool=callgrind --callgrind-out-file=/dev/null \
-        "$bin" --scene cornell --sampler "$1" --spp 16 --frames "$2" 2>&1 |
-        sed -n 's/.*Collected : \([0-9]*\).*/\1/p'
-}
+. lab/callgrind.sh
+callgrind_example tracer
+count() { collected --scene cornell --sampler "$1" --spp 16 --frames "$2"; }
 frame() { echo $(( ($(count "$1" 3) - $(count "$1" 1)) / 2 )); }
 if [ $# -eq 0 ]; then
     set -- random sobol pmj02 zsobol blue-noise jittered correlated-multi-jittered \
