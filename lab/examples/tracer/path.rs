@@ -232,21 +232,19 @@ pub fn render(
     film_lens: FilmLens,
     tracing: Tracing,
 ) -> Image {
+    let frame = CornellFrame {
+        width,
+        height,
+        spp,
+        film_lens,
+        tracing,
+    };
     let pixels = match sampler {
         // One dispatch per frame: the frame's loop is compiled for the
         // concrete sampler, each path's domain borrows it (32 bytes).
-        FrameSampler::Pixel(sampler) => sampler.visit(CornellFrame {
-            width,
-            height,
-            spp,
-            film_lens,
-            tracing,
-        }),
+        FrameSampler::Pixel(sampler) => sampler.visit(frame),
         FrameSampler::Pcg32(source) => render_cornell(width, height, spp, &source, tracing),
-        FrameSampler::JointSobol(sampler) => {
-            let source = Domains::frame(&sampler, film_lens);
-            render_cornell(width, height, spp, &source, tracing)
-        }
+        FrameSampler::JointSobol(sampler) => frame.visit(&sampler),
     };
     Image {
         width,
@@ -255,9 +253,10 @@ pub fn render(
     }
 }
 
-/// A frame of the Cornell box as [`AnyPixelSampler::visit`] runs it: on
-/// the concrete pixel sampler, so the draws cost what the concrete type's
-/// do, with the same values as through the enum.
+/// A frame of the Cornell box on a concrete pixel sampler, as
+/// [`AnyPixelSampler::visit`] runs it (or [`render`] directly, for a
+/// sampler that is already concrete): the draws cost what the concrete
+/// type's do, with the same values as through the enum.
 struct CornellFrame {
     width: u32,
     height: u32,
